@@ -1,0 +1,68 @@
+// Inputs of the topology analyzer: the mesh as plain arrays plus the refinement options.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace quadtri {
+
+enum class Scheme {
+    Bilinear,  // linear subdivision only: corners stay, edge midpoints, face centroids
+    StamLoop,  // Stam-Loop quad/triangle: Catmull-Clark on quads, Loop on triangles, corrected mixed vertices
+};
+
+enum class BoundaryInterpolation {
+    EdgeOnly,       // boundary edges sharp; a corner vertex (1 face, 2 edges) follows the crease rule
+    EdgeAndCorner,  // boundary edges sharp; a corner vertex is fixed
+    None,           // boundary edges sharp; faces at boundary vertices become holes (not output)
+};
+
+enum class CreaseMethod {
+    Uniform,  // s -> s - 1 per level
+    Chaikin,  // 3:1 blend with the other semi-sharp edges at the vertex, then - 1
+};
+
+struct Options {
+    Scheme scheme = Scheme::StamLoop;
+    BoundaryInterpolation boundary = BoundaryInterpolation::EdgeOnly;
+    CreaseMethod creaseMethod = CreaseMethod::Uniform;
+    // Faces are listed clockwise. Only the orientation of faces depends on it; no weight does.
+    bool leftHanded = false;
+    // A refinement whose estimated tables and output exceed this many bytes is refused.
+    std::size_t memoryBudgetBytes = std::size_t(4) << 30;
+};
+
+// Sharpness at or above this value is infinitely sharp.
+constexpr float kInfiniteSharpness = 10.0f;
+
+// The mesh as plain arrays; nothing is copied until the Refiner is built.
+struct TopologyDescriptor {
+    int numVertices = 0;
+    int numFaces = 0;
+    const int* numVertsPerFace = nullptr;  // numFaces entries
+    const int* faceVertIndices = nullptr;  // sum(numVertsPerFace) entries, 0-based
+
+    int numCreases = 0;
+    const int* creaseVertexPairs = nullptr;  // 2 * numCreases
+    const float* creaseWeights = nullptr;    // numCreases sharpness values
+
+    int numCorners = 0;
+    const int* cornerVertexIndices = nullptr;  // numCorners
+    const float* cornerWeights = nullptr;      // numCorners sharpness values
+
+    int numHoles = 0;
+    const int* holeIndices = nullptr;  // face indices
+};
+
+// Malformed topology or an unsatisfiable request. The message names the face, vertex or level.
+class TopologyError : public std::runtime_error {
+public:
+    explicit TopologyError(const std::string& what) : std::runtime_error(what) {}
+};
+
+const char* toString(Scheme scheme);
+const char* toString(BoundaryInterpolation boundary);
+const char* toString(CreaseMethod method);
+
+}  // namespace quadtri

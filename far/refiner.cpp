@@ -1,0 +1,69 @@
+#include "far/refiner.h"
+
+#include <string>
+
+#include "far/refine_topology.h"
+#include "far/rules.h"
+
+namespace quadtri {
+
+Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
+    levels_.push_back(buildBaseTopology(desc, options));
+}
+
+std::size_t Refiner::estimateLevelBytes(int L) const {
+    const Topology& p = levels_.at(L - 1);
+    std::size_t faces = 0, corners = 0, entries = 0, facePoints = 0;
+    for (int f = 0; f < p.numFaces(); ++f) {
+        const std::size_t n = p.faceSize(f);
+        faces += n == 3 ? 4 : n;
+        corners += n == 3 ? 12 : 4 * n;
+        facePoints += n == 3 ? 0 : 1;
+        // Each face contributes its corners to its face point and to the masks of its edges'
+        // and vertices' points.
+        entries += n + 2 * n * n;
+    }
+    const std::size_t edges = 2 * std::size_t(p.numEdges()) + corners / 4;
+    const std::size_t vertices = facePoints + p.numEdges() + p.numVertices;
+    entries += 4 * std::size_t(p.numEdges()) + p.numVertices;
+    const std::size_t topologyBytes = corners * 16 + edges * 25 + vertices * 22 + faces * 5;
+    const std::size_t tableBytes = entries * (4 + 4 + 8 + 4) + vertices * 8;  // double while built
+    const std::size_t outputBytes = vertices * 3 * sizeof(float);
+    return topologyBytes + tableBytes + outputBytes;
+}
+
+void Refiner::refineUniform(int maxLevel) {
+    if (maxLevel < 0) throw TopologyError("refinement level " + std::to_string(maxLevel) + " is negative");
+    while (this->maxLevel() < maxLevel) {
+        const int L = this->maxLevel() + 1;
+        const std::size_t estimate = estimateLevelBytes(L);
+        if (estimate > options_.memoryBudgetBytes)
+            throw TopologyError("level " + std::to_string(L) + " needs an estimated " + std::to_string(estimate) +
+                                " bytes of tables and output, over the budget of " +
+                                std::to_string(options_.memoryBudgetBytes) + " bytes (Options::memoryBudgetBytes)");
+        const Topology& parent = levels_.back();
+        const ChildNumbering numbering = numberChildren(parent);
+        levelTables_.push_back(toFloatTable(buildLevelStencils(parent, numbering, options_)));
+        levels_.push_back(refineTopology(parent, numbering, options_.creaseMethod));
+    }
+}
+
+StencilTable Refiner::factorizedStencils(int L) const {
+    if (L < 1 || L > maxLevel())
+        throw TopologyError("factorized stencils asked for level " + std::to_string(L) + "; refined levels are 1.." +
+                            std::to_string(maxLevel()));
+    auto asDouble = [](const StencilTable& t) {
+        StencilTableD d;
+        d.numSourceVertices = t.numSourceVertices;
+        d.sizes = t.sizes;
+        d.offsets = t.offsets;
+        d.indices = t.indices;
+        d.weights.assign(t.weights.begin(), t.weights.end());
+        return d;
+    };
+    StencilTableD composed = asDouble(levelTables_[0]);
+    for (int l = 2; l <= L; ++l) composed = composeStencils(asDouble(levelTables_[l - 1]), composed);
+    return toFloatTable(composed);
+}
+
+}  // namespace quadtri

@@ -1,0 +1,47 @@
+// The public face of the analyzer: validate a mesh, refine its topology uniformly, and emit the
+// stencil tables of every level (per level) or of one level from the control vertices (factorized).
+#pragma once
+
+#include <vector>
+
+#include "far/options.h"
+#include "far/stencil_table.h"
+#include "far/topology.h"
+
+namespace quadtri {
+
+class Refiner {
+public:
+    // Validates the descriptor (TopologyError on bad input) and builds level 0.
+    Refiner(const TopologyDescriptor& desc, const Options& options);
+
+    // Refines to `maxLevel` (>= 0), building the topology and per-level stencil table of every
+    // level not yet built. Throws TopologyError, before allocating, if a level's estimated
+    // tables and output exceed options.memoryBudgetBytes.
+    void refineUniform(int maxLevel);
+
+    int maxLevel() const { return int(levels_.size()) - 1; }
+    const Options& options() const { return options_; }
+
+    // Topology of level 0 .. maxLevel(). Vertex order of level L >= 1: the face points of the
+    // non-triangle faces of level L-1 (in face order), then one point per edge (edge order),
+    // then one point per vertex (vertex order).
+    const Topology& level(int L) const { return levels_.at(L); }
+
+    // Stencils of level L >= 1 over the vertices of level L-1, one per vertex of level L.
+    const StencilTable& levelStencils(int L) const { return levelTables_.at(L - 1); }
+
+    // Stencils of level L >= 1 over the control (level 0) vertices: the per-level tables
+    // composed, accumulated in double precision.
+    StencilTable factorizedStencils(int L) const;
+
+    // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L.
+    std::size_t estimateLevelBytes(int L) const;
+
+private:
+    Options options_;
+    std::vector<Topology> levels_;
+    std::vector<StencilTable> levelTables_;
+};
+
+}  // namespace quadtri

@@ -1,0 +1,271 @@
+// Connectivity from face-vertex lists: edges, incidences and boundary / non-manifold / seam flags.
+#include "far/topology.h"
+
+#include <algorithm>
+#include <string>
+
+namespace quadtri {
+
+const char* toString(Scheme scheme) {
+    switch (scheme) {
+    case Scheme::Bilinear: return "bilinear";
+    case Scheme::StamLoop: return "stam-loop";
+    }
+    return "?";
+}
+
+const char* toString(BoundaryInterpolation boundary) {
+    switch (boundary) {
+    case BoundaryInterpolation::EdgeOnly: return "edge-only";
+    case BoundaryInterpolation::EdgeAndCorner: return "edge-and-corner";
+    case BoundaryInterpolation::None: return "none";
+    }
+    return "?";
+}
+
+const char* toString(CreaseMethod method) {
+    switch (method) {
+    case CreaseMethod::Uniform: return "uniform";
+    case CreaseMethod::Chaikin: return "chaikin";
+    }
+    return "?";
+}
+
+VertexFaceCounts countVertexFaces(const Topology& t, int v) {
+    VertexFaceCounts counts;
+    for (int i = t.vertFaceOffsets[v]; i < t.vertFaceOffsets[v + 1]; ++i) {
+        if (t.faceSize(t.vertFaces[i]) == 3)
+            ++counts.triangles;
+        else
+            ++counts.quads;
+    }
+    return counts;
+}
+
+namespace {
+
+// Prefix sums turning per-item counts (stored at [i+1]) into CSR offsets.
+void countsToOffsets(std::vector<int>& offsets) {
+    for (size_t i = 1; i < offsets.size(); ++i) offsets[i] += offsets[i - 1];
+}
+
+// Edges keyed by their lower vertex: corners are bucketed by min(a, b) with a counting sort,
+// and each bucket (a vertex's few edges) is searched linearly. No hashing, no maps.
+void buildEdges(Topology& t) {
+    const int nv = t.numVertices;
+    const int nc = t.numFaceVertices();
+    std::vector<int> cornerNext(nc);
+    for (int f = 0; f < t.numFaces(); ++f) {
+        const int b = t.faceOffsets[f], n = t.faceSize(f);
+        for (int i = 0; i < n; ++i) cornerNext[b + i] = t.faceVerts[b + (i + 1) % n];
+    }
+    std::vector<int> bucketOffsets(nv + 1, 0);
+    for (int c = 0; c < nc; ++c) ++bucketOffsets[std::min(t.faceVerts[c], cornerNext[c]) + 1];
+    countsToOffsets(bucketOffsets);
+    std::vector<int> bucket(nc);
+    {
+        std::vector<int> fill(bucketOffsets.begin(), bucketOffsets.end() - 1);
+        for (int c = 0; c < nc; ++c) bucket[fill[std::min(t.faceVerts[c], cornerNext[c])]++] = c;
+    }
+    t.faceEdges.assign(nc, -1);
+    t.edgeVerts.clear();
+    t.edgeVerts.reserve(nc);  // about nc/2 edges for closed meshes, nc for open ones
+    for (int lo = 0; lo < nv; ++lo) {
+        const int firstEdge = t.numEdges();
+        for (int k = bucketOffsets[lo]; k < bucketOffsets[lo + 1]; ++k) {
+            const int c = bucket[k];
+            const int hi = std::max(t.faceVerts[c], cornerNext[c]);
+            int e = firstEdge;
+            while (e < t.numEdges() && t.edgeVerts[2 * e + 1] != hi) ++e;
+            if (e == t.numEdges()) {
+                t.edgeVerts.push_back(lo);
+                t.edgeVerts.push_back(hi);
+            }
+            t.faceEdges[c] = e;
+        }
+    }
+}
+
+void buildIncidences(Topology& t) {
+    const int nv = t.numVertices, ne = t.numEdges(), nf = t.numFaces();
+    t.edgeFaceOffsets.assign(ne + 1, 0);
+    for (int e : t.faceEdges) ++t.edgeFaceOffsets[e + 1];
+    countsToOffsets(t.edgeFaceOffsets);
+    t.edgeFaces.resize(t.faceEdges.size());
+    t.vertFaceOffsets.assign(nv + 1, 0);
+    for (int v : t.faceVerts) ++t.vertFaceOffsets[v + 1];
+    countsToOffsets(t.vertFaceOffsets);
+    t.vertFaces.resize(t.faceVerts.size());
+    {
+        std::vector<int> edgeFill(t.edgeFaceOffsets.begin(), t.edgeFaceOffsets.end() - 1);
+        std::vector<int> vertFill(t.vertFaceOffsets.begin(), t.vertFaceOffsets.end() - 1);
+        for (int f = 0; f < nf; ++f)
+            for (int c = t.faceOffsets[f]; c < t.faceOffsets[f + 1]; ++c) {
+                t.edgeFaces[edgeFill[t.faceEdges[c]]++] = f;
+                t.vertFaces[vertFill[t.faceVerts[c]]++] = f;
+            }
+    }
+    t.vertEdgeOffsets.assign(nv + 1, 0);
+    for (int v : t.edgeVerts) ++t.vertEdgeOffsets[v + 1];
+    countsToOffsets(t.vertEdgeOffsets);
+    t.vertEdges.resize(t.edgeVerts.size());
+    std::vector<int> fill(t.vertEdgeOffsets.begin(), t.vertEdgeOffsets.end() - 1);
+    for (int e = 0; e < ne; ++e) {
+        t.vertEdges[fill[t.edgeVerts[2 * e]]++] = e;
+        t.vertEdges[fill[t.edgeVerts[2 * e + 1]]++] = e;
+    }
+}
+
+// Corner index of vertex v in face f.
+int cornerOf(const Topology& t, int f, int v) {
+    int c = t.faceOffsets[f];
+    while (t.faceVerts[c] != v) ++c;
+    return c;
+}
+
+void flagEdges(Topology& t) {
+    const int ne = t.numEdges();
+    t.edgeFlags.assign(ne, 0);
+    for (int e = 0; e < ne; ++e) {
+        const int nf = t.edgeFaceCount(e);
+        const int* faces = &t.edgeFaces[t.edgeFaceOffsets[e]];
+        if (nf == 1) {
+            t.edgeFlags[e] |= kEdgeBoundary;
+        } else if (nf > 2) {
+            t.edgeFlags[e] |= kEdgeNonManifold;
+        } else {
+            // Two faces crossing the edge the same way disagree on orientation: not a manifold pair.
+            const int c0 = cornerOf(t, faces[0], t.edgeVerts[2 * e]);
+            const int c1 = cornerOf(t, faces[1], t.edgeVerts[2 * e]);
+            const bool sameWay = (t.faceEdges[c0] == e) == (t.faceEdges[c1] == e);
+            if (sameWay || faces[0] == faces[1]) {
+                t.edgeFlags[e] |= kEdgeNonManifold;
+            } else if ((t.faceSize(faces[0]) == 3) != (t.faceSize(faces[1]) == 3)) {
+                t.edgeFlags[e] |= kEdgeSeam;
+            }
+        }
+    }
+}
+
+// The faces of a manifold vertex form one fan: walk it face to face across manifold edges.
+bool isSingleFan(const Topology& t, int v, int boundaryEdges) {
+    const int nf = t.vertexFaceCount(v);
+    if (nf == 0) return true;
+    const int* faces = &t.vertFaces[t.vertFaceOffsets[v]];
+    auto outgoing = [&](int f) { return t.faceEdges[cornerOf(t, f, v)]; };
+    auto incoming = [&](int f) {
+        const int c = cornerOf(t, f, v);
+        return t.faceEdges[c == t.faceOffsets[f] ? t.faceOffsets[f + 1] - 1 : c - 1];
+    };
+    int start = faces[0];
+    if (boundaryEdges == 2) {  // start at the face whose incoming edge is on the boundary
+        for (int i = 0; i < nf; ++i)
+            if (t.edgeFlags[incoming(faces[i])] & kEdgeBoundary) start = faces[i];
+    }
+    int f = start, visited = 0;
+    while (visited <= nf) {
+        ++visited;
+        const int e = outgoing(f);
+        if (t.edgeFlags[e] & kEdgeBoundary) break;
+        const int* ef = &t.edgeFaces[t.edgeFaceOffsets[e]];
+        f = ef[0] == f ? ef[1] : ef[0];
+        if (f == start) break;
+    }
+    return visited == nf;
+}
+
+void flagVertices(Topology& t) {
+    const int nv = t.numVertices;
+    t.vertFlags.assign(nv, 0);
+    for (int v = 0; v < nv; ++v) {
+        int boundary = 0;
+        uint8_t flags = 0;
+        for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i) {
+            const uint8_t ef = t.edgeFlags[t.vertEdges[i]];
+            boundary += (ef & kEdgeBoundary) ? 1 : 0;
+            if (ef & kEdgeNonManifold) flags |= kVertexNonManifold;
+            if (ef & kEdgeSeam) flags |= kVertexSeam;
+        }
+        if (boundary > 0) flags |= kVertexBoundary;
+        const int nf = t.vertexFaceCount(v), ne = t.vertexEdgeCount(v);
+        if (!(flags & kVertexNonManifold)) {
+            const bool counts = boundary == 0 ? ne == nf : (boundary == 2 && ne == nf + 1);
+            if (!counts || !isSingleFan(t, v, boundary)) flags |= kVertexNonManifold;
+        }
+        if (nf == 1 && ne == 2) flags |= kVertexCorner;
+        t.vertFlags[v] = flags;
+    }
+}
+
+}  // namespace
+
+void completeTopology(Topology& t) {
+    buildEdges(t);
+    buildIncidences(t);
+    flagEdges(t);
+    flagVertices(t);
+    t.edgeSharpness.assign(t.numEdges(), 0.0f);
+    t.vertSharpness.assign(t.numVertices, 0.0f);
+    t.faceHole.resize(t.numFaces(), 0);
+}
+
+int findEdge(const Topology& t, int a, int b) {
+    for (int i = t.vertEdgeOffsets[a]; i < t.vertEdgeOffsets[a + 1]; ++i)
+        if (t.otherVertex(t.vertEdges[i], a) == b) return t.vertEdges[i];
+    return -1;
+}
+
+Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options) {
+    validateDescriptor(desc);
+    Topology t;
+    t.numVertices = desc.numVertices;
+    t.faceOffsets.assign(desc.numFaces + 1, 0);
+    for (int f = 0; f < desc.numFaces; ++f) t.faceOffsets[f + 1] = t.faceOffsets[f] + desc.numVertsPerFace[f];
+    t.faceVerts.assign(desc.faceVertIndices, desc.faceVertIndices + t.faceOffsets.back());
+    if (options.leftHanded) {  // store counter-clockwise: keep the first corner, reverse the rest
+        for (int f = 0; f < desc.numFaces; ++f)
+            std::reverse(t.faceVerts.begin() + t.faceOffsets[f] + 1, t.faceVerts.begin() + t.faceOffsets[f + 1]);
+    }
+    completeTopology(t);
+
+    for (int i = 0; i < desc.numCreases; ++i) {
+        const int a = desc.creaseVertexPairs[2 * i], b = desc.creaseVertexPairs[2 * i + 1];
+        const int e = findEdge(t, a, b);
+        if (e < 0)
+            throw TopologyError("crease " + std::to_string(i) + ": vertices " + std::to_string(a) + " and " +
+                                std::to_string(b) + " do not share an edge");
+        t.edgeSharpness[e] = desc.creaseWeights[i];
+    }
+    for (int i = 0; i < desc.numCorners; ++i) t.vertSharpness[desc.cornerVertexIndices[i]] = desc.cornerWeights[i];
+    for (int i = 0; i < desc.numHoles; ++i) t.faceHole[desc.holeIndices[i]] = 1;
+
+    // Boundary and non-manifold edges are infinitely sharp.
+    for (int e = 0; e < t.numEdges(); ++e)
+        if (t.edgeFlags[e] & (kEdgeBoundary | kEdgeNonManifold)) t.edgeSharpness[e] = kInfiniteSharpness;
+
+    for (int v = 0; v < t.numVertices; ++v) {
+        const uint8_t flags = t.vertFlags[v];
+        if ((flags & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner) {
+            t.vertSharpness[v] = kInfiniteSharpness;
+        } else if (flags & kVertexNonManifold) {
+            // A non-manifold crease (two opposing non-manifold edges carrying extra fins, no
+            // boundary) stays a crease; every other non-manifold vertex becomes a corner.
+            int nonManifoldEdges = 0;
+            for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i)
+                nonManifoldEdges += (t.edgeFlags[t.vertEdges[i]] & kEdgeNonManifold) ? 1 : 0;
+            const bool nonManifoldCrease = nonManifoldEdges == 2 && !(flags & kVertexBoundary) &&
+                                           t.vertexFaceCount(v) > t.vertexEdgeCount(v);
+            if (!nonManifoldCrease) t.vertSharpness[v] = kInfiniteSharpness;
+        }
+        if (t.vertexFaceCount(v) == 0) t.vertSharpness[v] = kInfiniteSharpness;  // isolated: stays put
+    }
+    if (options.boundary == BoundaryInterpolation::None) {
+        for (int v = 0; v < t.numVertices; ++v) {
+            if (!(t.vertFlags[v] & kVertexBoundary) || t.vertSharpness[v] >= kInfiniteSharpness) continue;
+            for (int i = t.vertFaceOffsets[v]; i < t.vertFaceOffsets[v + 1]; ++i) t.faceHole[t.vertFaces[i]] = 1;
+        }
+    }
+    return t;
+}
+
+}  // namespace quadtri

@@ -1,0 +1,82 @@
+// Connectivity of one refinement level, as flat index arrays (structure of arrays).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "far/options.h"
+
+namespace quadtri {
+
+enum EdgeFlag : uint8_t {
+    kEdgeBoundary = 1,     // exactly one incident face
+    kEdgeNonManifold = 2,  // more than two faces, or two faces that traverse it the same way
+    kEdgeSeam = 4,         // one triangle and one quad (or n-gon) on its two sides
+};
+
+enum VertexFlag : uint8_t {
+    kVertexBoundary = 1,     // on a boundary edge
+    kVertexNonManifold = 2,  // on a non-manifold edge, or its faces form more than one fan
+    kVertexSeam = 4,         // on at least one seam edge
+    kVertexCorner = 8,       // topological corner: one face, two edges
+};
+
+struct Topology {
+    int numVertices = 0;
+
+    // Faces: vertices of face f are faceVerts[faceOffsets[f] .. faceOffsets[f+1]).
+    // faceEdges is parallel to faceVerts: entry i is the edge from faceVerts[i] to the next corner.
+    std::vector<int> faceOffsets{0};
+    std::vector<int> faceVerts;
+    std::vector<int> faceEdges;
+    std::vector<uint8_t> faceHole;
+
+    // Edges: endpoints edgeVerts[2e], edgeVerts[2e+1]; incident faces in CSR form.
+    std::vector<int> edgeVerts;
+    std::vector<int> edgeFaceOffsets{0};
+    std::vector<int> edgeFaces;
+    std::vector<float> edgeSharpness;
+    std::vector<uint8_t> edgeFlags;
+
+    // Vertices: incident faces and edges in CSR form (unordered).
+    std::vector<int> vertFaceOffsets{0};
+    std::vector<int> vertFaces;
+    std::vector<int> vertEdgeOffsets{0};
+    std::vector<int> vertEdges;
+    std::vector<float> vertSharpness;
+    std::vector<uint8_t> vertFlags;
+
+    int numFaces() const { return int(faceOffsets.size()) - 1; }
+    int numEdges() const { return int(edgeVerts.size() / 2); }
+    int faceSize(int f) const { return faceOffsets[f + 1] - faceOffsets[f]; }
+    int edgeFaceCount(int e) const { return edgeFaceOffsets[e + 1] - edgeFaceOffsets[e]; }
+    int vertexEdgeCount(int v) const { return vertEdgeOffsets[v + 1] - vertEdgeOffsets[v]; }
+    int vertexFaceCount(int v) const { return vertFaceOffsets[v + 1] - vertFaceOffsets[v]; }
+    // The other endpoint of edge e seen from vertex v.
+    int otherVertex(int e, int v) const { return edgeVerts[2 * e] == v ? edgeVerts[2 * e + 1] : edgeVerts[2 * e]; }
+    int numFaceVertices() const { return int(faceVerts.size()); }
+};
+
+// Per-vertex face-type counts: incident quad-like faces (4 or more corners) and triangles.
+struct VertexFaceCounts {
+    int quads = 0;
+    int triangles = 0;
+};
+VertexFaceCounts countVertexFaces(const Topology& topology, int vertex);
+
+// Edge joining vertices a and b, or -1.
+int findEdge(const Topology& topology, int a, int b);
+
+// Checks the descriptor (throws TopologyError naming the face or vertex) and builds level 0:
+// edges, incidences, sharpness, boundary / non-manifold / seam flags, holes (including the
+// faces that BoundaryInterpolation::None turns into holes).
+Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options);
+
+// Throws TopologyError for malformed input; called by buildBaseTopology before anything else.
+void validateDescriptor(const TopologyDescriptor& desc);
+
+// Fills edges, incidences and flags of a topology whose numVertices, faceOffsets and faceVerts
+// are set. Sharpness arrays are sized and zeroed. Used for level 0 and for every refined level.
+void completeTopology(Topology& topology);
+
+}  // namespace quadtri

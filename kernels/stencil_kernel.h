@@ -1,0 +1,62 @@
+// The one stencil loop. Serial, threaded and (mirrored in GLSL) Vulkan evaluators all run it:
+// dst[i] = sum_k weights[offsets[i]+k] * src[indices[offsets[i]+k]] for i in [start, end).
+#pragma once
+
+namespace quadtri::kernels {
+
+struct StencilArrays {
+    const int* sizes;
+    const int* offsets;
+    const int* indices;
+    const float* weights;
+};
+
+// Width known at compile time: the accumulator lives in registers and the inner loop unrolls.
+template <int Width>
+inline void evalStencilsFixed(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t,
+                              int start, int end) {
+    for (int i = start; i < end; ++i) {
+        float acc[Width] = {};
+        const int* idx = t.indices + t.offsets[i];
+        const float* w = t.weights + t.offsets[i];
+        const int n = t.sizes[i];
+        for (int k = 0; k < n; ++k) {
+            const float* s = src + static_cast<long>(idx[k]) * srcStride;
+            const float wk = w[k];
+            for (int c = 0; c < Width; ++c) acc[c] += wk * s[c];
+        }
+        float* d = dst + static_cast<long>(i) * dstStride;
+        for (int c = 0; c < Width; ++c) d[c] = acc[c];
+    }
+}
+
+// Any width: accumulates straight into the destination element.
+inline void evalStencilsGeneric(const float* src, int srcStride, float* dst, int dstStride, int width,
+                                const StencilArrays& t, int start, int end) {
+    for (int i = start; i < end; ++i) {
+        float* d = dst + static_cast<long>(i) * dstStride;
+        for (int c = 0; c < width; ++c) d[c] = 0.0f;
+        const int* idx = t.indices + t.offsets[i];
+        const float* w = t.weights + t.offsets[i];
+        const int n = t.sizes[i];
+        for (int k = 0; k < n; ++k) {
+            const float* s = src + static_cast<long>(idx[k]) * srcStride;
+            const float wk = w[k];
+            for (int c = 0; c < width; ++c) d[c] += wk * s[c];
+        }
+    }
+}
+
+// src and dst point at element 0 (descriptor offsets already applied).
+inline void evalStencils(const float* src, int srcStride, float* dst, int dstStride, int width,
+                         const StencilArrays& t, int start, int end) {
+    switch (width) {
+    case 1: evalStencilsFixed<1>(src, srcStride, dst, dstStride, t, start, end); break;
+    case 2: evalStencilsFixed<2>(src, srcStride, dst, dstStride, t, start, end); break;
+    case 3: evalStencilsFixed<3>(src, srcStride, dst, dstStride, t, start, end); break;
+    case 4: evalStencilsFixed<4>(src, srcStride, dst, dstStride, t, start, end); break;
+    default: evalStencilsGeneric(src, srcStride, dst, dstStride, width, t, start, end); break;
+    }
+}
+
+}  // namespace quadtri::kernels

@@ -1,0 +1,21 @@
+// Serial evaluator: applies a StencilTable to any per-vertex float data.
+#pragma once
+
+#include "far/stencil_table.h"
+#include "osd/buffer_descriptor.h"
+
+namespace quadtri {
+
+class CpuEvaluator {
+public:
+    // Evaluates stencils [start, end) of `table` (end < 0: up to the last stencil). Stencil i
+    // writes destination element i, so a range fills exactly rows [start, end) of dst and leaves
+    // the others untouched. Source elements are read at the table's indices. src and dst must not
+    // overlap. Throws std::invalid_argument on an invalid descriptor, a length mismatch or a bad
+    // range.
+    static void EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                             const BufferDescriptor& dstDesc, const StencilTable& table, int start = 0,
+                             int end = -1);
+};
+
+}  // namespace quadtri

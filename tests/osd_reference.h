@@ -1,0 +1,86 @@
+// OpenSubdiv as the reference for the agreement tests: uniform refinement of an ObjMesh with
+// Far::TopologyRefiner + Far::PrimvarRefiner, and a position-based comparison of two vertex sets
+// (OpenSubdiv orders refined vertices differently from quadtri, so vertices are matched by position).
+// Used only by tests; the library never depends on OpenSubdiv.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "far/options.h"
+#include "tools/obj_io.h"
+
+namespace quadtri::test {
+
+// OpenSubdiv's subdivision scheme used as the reference (Sdc::SCHEME_*).
+enum class OsdScheme { Catmark, Loop, Bilinear };
+
+const char* toString(OsdScheme scheme);
+
+// Connectivity of one OpenSubdiv level as plain arrays, and where its components' children went:
+// enough to find, for a quadtri child vertex, the OpenSubdiv child of the same parent component.
+struct OsdLevelTopology {
+    std::vector<int> faceOffsets{0};  // faces: faceVerts[faceOffsets[f] .. faceOffsets[f+1])
+    std::vector<int> faceVerts;
+    std::vector<int> edgeVerts;       // 2 per edge
+    std::vector<int> faceChild;       // child vertex in the next level (-1: none / last level)
+    std::vector<int> edgeChild;
+    std::vector<int> vertexChild;
+    std::vector<float> edgeSharpness;
+    std::vector<float> vertexSharpness;
+    std::vector<int> vertexRule;      // Sdc::Crease::Rule: 0 unknown, 1 smooth, 2 dart, 4 crease, 8 corner
+    std::vector<char> vertexBoundary;
+    std::vector<char> vertexNonManifold;
+    std::vector<char> edgeNonManifold;
+    int numFaces() const { return int(faceOffsets.size()) - 1; }
+    int numEdges() const { return int(edgeVerts.size() / 2); }
+};
+
+const char* vertexRuleName(int rule);
+
+struct OsdRefinement {
+    // positions[L]: 3 floats per vertex of level L, in OpenSubdiv's vertex order (level 0 = control).
+    std::vector<std::vector<float>> positions;
+    std::vector<int> numVertices;            // per level
+    std::vector<int> numFaces;               // per level (hole faces included)
+    std::vector<std::vector<char>> faceHole; // per level, per face: Far::TopologyLevel::IsFaceHole
+    std::vector<OsdLevelTopology> topology;  // per level
+    int numHoleFaces(int level) const;
+};
+
+// Refines `mesh` uniformly to `maxLevel` with OpenSubdiv (default refinement options) and
+// interpolates positions level by level. Creases, corners and holes of the mesh are passed through
+// the Far::TopologyDescriptor; `boundary` and `creaseMethod` set the Sdc options (the mesh's own
+// tags are NOT applied here: the caller resolves them). Throws std::runtime_error if OpenSubdiv
+// refuses the topology.
+OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                        CreaseMethod creaseMethod, int maxLevel);
+
+// Result of matching each vertex of `ours` to a distinct vertex of `reference` by position.
+struct PositionMatch {
+    int numOurs = 0;
+    int numReference = 0;
+    bool countsEqual = false;
+    // ourToReference[i]: the reference vertex matched to our vertex i. The matching is one-to-one
+    // by construction: our vertices are taken in order, each gets the nearest reference vertex not
+    // yet taken. When the two sets agree up to the tolerance this is the nearest-neighbour matching.
+    std::vector<int> ourToReference;
+    // Our vertices whose unrestricted nearest reference vertex was already taken by another of our
+    // vertices (0 unless the sets contain (near) duplicates or disagree).
+    int numCollisions = 0;
+    double maxDistance = 0;        // over matched pairs
+    int worstOurs = -1;            // our vertex with the largest distance
+    int worstReference = -1;       // its reference partner
+    double diagonal = 0;           // bounding-box diagonal used to normalize
+    double maxRelative() const { return diagonal > 0 ? maxDistance / diagonal : maxDistance; }
+    // Our vertices whose matched distance exceeds `tolerance * diagonal`, in index order.
+    std::vector<int> outliers;
+};
+
+// Matches positions (xyz triples) with a uniform hash grid (expected O(n) for well spread points).
+// `diagonal` normalizes the distances (pass the bounding-box diagonal of the control mesh);
+// `tolerance` (relative) only decides which vertices are listed as outliers.
+PositionMatch matchPositions(const std::vector<float>& ours, const std::vector<float>& reference, double diagonal,
+                             double tolerance);
+
+}  // namespace quadtri::test

@@ -1,0 +1,275 @@
+// OBJ reading (positions, faces, OpenSubdiv tags, errors) and writing.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "tests/test_support.h"
+#include "tools/obj_io.h"
+
+namespace quadtri::io {
+namespace {
+
+ObjMesh parse(const std::string& text, const std::string& name = "mesh.obj") {
+    std::istringstream in(text);
+    return parseObj(in, name);
+}
+
+// The message of the ObjError that parsing `text` throws, or "" if it parses.
+std::string parseError(const std::string& text) {
+    try {
+        parse(text, "bad.obj");
+    } catch (const ObjError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// Expects parsing to fail at `line` with a message containing `problem`.
+void expectError(const std::string& text, int line, const std::string& problem) {
+    std::string message = parseError(text);
+    std::string prefix = "bad.obj:" + std::to_string(line) + ": ";
+    EXPECT_EQ(message.substr(0, prefix.size()), prefix) << "message: " << message << "\ninput:\n" << text;
+    EXPECT_NE(message.find(problem), std::string::npos) << "message: " << message << "\nexpected: " << problem;
+}
+
+const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+TEST(ObjIo, PositionsAndFaces) {
+    ObjMesh m = parse("# a comment\n\nv 0 0 0\nv 1.5 -2 3e2 1.0\nv 0 1 0  # trailing\nv 1 1 1\n"
+                      "vt 0 0\nvn 0 0 1\no obj\ng grp\ns 1\nusemtl m\nmtllib m.mtl\n"
+                      "f 1 2 3\nf 2 4 3 1\n");
+    EXPECT_EQ(m.numVertices(), 4);
+    ASSERT_EQ(m.positions.size(), 12u);
+    EXPECT_FLOAT_EQ(m.positions[3], 1.5f);
+    EXPECT_FLOAT_EQ(m.positions[4], -2.0f);
+    EXPECT_FLOAT_EQ(m.positions[5], 300.0f);
+    EXPECT_EQ(m.faceSizes, (std::vector<int>{3, 4}));
+    EXPECT_EQ(m.faceVerts, (std::vector<int>{0, 1, 2, 1, 3, 2, 0}));
+    EXPECT_TRUE(m.warnings.empty());
+    EXPECT_FALSE(m.boundary.has_value());
+    EXPECT_FALSE(m.creaseMethod.has_value());
+}
+
+TEST(ObjIo, SlashFormsAndNegativeIndices) {
+    ObjMesh m = parse(std::string(kQuad) + "f 1/1 2/2/2 3//3 4/4/4\nf -4 -3/1 -2//1\n");
+    EXPECT_EQ(m.faceSizes, (std::vector<int>{4, 3}));
+    EXPECT_EQ(m.faceVerts, (std::vector<int>{0, 1, 2, 3, 0, 1, 2}));
+    // Relative to the vertices read so far, not to the final count.
+    ObjMesh r = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 5 5 5\nf -1 -2 -3\n");
+    EXPECT_EQ(r.faceVerts, (std::vector<int>{0, 1, 2, 3, 2, 1}));
+}
+
+TEST(ObjIo, FacesBeforeVertices) {
+    ObjMesh m = parse("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    EXPECT_EQ(m.faceVerts, (std::vector<int>{0, 1, 2}));
+}
+
+TEST(ObjIo, CreaseTags) {
+    ObjMesh m = parse(std::string(kQuad) +
+                      "t crease 2/1/0 0 1 2.5\n"
+                      "t crease 4/1/0 1 2 2 3 10\n"
+                      "t crease 4/2/0 3 0 0 2 1 0.5\n");
+    EXPECT_EQ(m.creasePairs, (std::vector<int>{0, 1, 1, 2, 2, 3, 3, 0, 0, 2}));
+    EXPECT_EQ(m.creaseSharpness, (std::vector<float>{2.5f, 10.0f, 10.0f, 1.0f, 0.5f}));
+    TopologyDescriptor d = m.descriptor();
+    EXPECT_EQ(d.numCreases, 5);
+    EXPECT_EQ(d.creaseVertexPairs[9], 2);
+    EXPECT_EQ(d.creaseWeights[4], 0.5f);
+}
+
+TEST(ObjIo, CornerAndHoleTags) {
+    ObjMesh m = parse(std::string(kQuad) + "f 1 2 3 4\nf 4 3 2 1\n"
+                                           "t corner 1/1/0 2 3.0\n"
+                                           "t corner 2/1/0 0 1 1.5\n"
+                                           "t corner 2/2/0 3 1 4 5\n"
+                                           "t hole 1/0/0 1\n"
+                                           "t hole 2/0/0 0 1\n");
+    EXPECT_EQ(m.corners, (std::vector<int>{2, 0, 1, 3, 1}));
+    EXPECT_EQ(m.cornerSharpness, (std::vector<float>{3.0f, 1.5f, 1.5f, 4.0f, 5.0f}));
+    EXPECT_EQ(m.holes, (std::vector<int>{1, 0, 1}));
+    TopologyDescriptor d = m.descriptor();
+    EXPECT_EQ(d.numVertices, 4);
+    EXPECT_EQ(d.numFaces, 2);
+    EXPECT_EQ(d.numVertsPerFace[1], 4);
+    EXPECT_EQ(d.faceVertIndices[4], 3);
+    EXPECT_EQ(d.numCorners, 5);
+    EXPECT_EQ(d.cornerVertexIndices[0], 2);
+    EXPECT_EQ(d.cornerWeights[3], 4.0f);
+    EXPECT_EQ(d.numHoles, 3);
+    EXPECT_EQ(d.holeIndices[1], 0);
+}
+
+TEST(ObjIo, BoundaryAndCreaseMethodTags) {
+    const std::pair<int, BoundaryInterpolation> cases[] = {{0, BoundaryInterpolation::None},
+                                                           {1, BoundaryInterpolation::EdgeAndCorner},
+                                                           {2, BoundaryInterpolation::EdgeOnly}};
+    for (auto [value, expected] : cases) {
+        ObjMesh m = parse(std::string(kQuad) + "t interpolateboundary 1/0/0 " + std::to_string(value) + "\n");
+        ASSERT_TRUE(m.boundary.has_value());
+        EXPECT_EQ(*m.boundary, expected) << value;
+    }
+    EXPECT_EQ(parse("t creasemethod 0/0/1 chaikin\n").creaseMethod, CreaseMethod::Chaikin);
+    EXPECT_EQ(parse("t creasemethod 0/0/1 uniform\n").creaseMethod, CreaseMethod::Uniform);
+    EXPECT_EQ(parse("t creasemethod 0/0/1 normal\n").creaseMethod, CreaseMethod::Uniform);  // OpenSubdiv's name
+}
+
+TEST(ObjIo, ApplyTags) {
+    Options base;
+    base.scheme = Scheme::Bilinear;
+    base.boundary = BoundaryInterpolation::None;
+    base.creaseMethod = CreaseMethod::Uniform;
+    base.leftHanded = true;
+
+    Options untouched = parse(kQuad).applyTags(base);
+    EXPECT_EQ(untouched.boundary, BoundaryInterpolation::None);
+    EXPECT_EQ(untouched.creaseMethod, CreaseMethod::Uniform);
+
+    Options tagged = parse("t interpolateboundary 1/0/0 1\nt creasemethod 0/0/1 chaikin\n").applyTags(base);
+    EXPECT_EQ(tagged.boundary, BoundaryInterpolation::EdgeAndCorner);
+    EXPECT_EQ(tagged.creaseMethod, CreaseMethod::Chaikin);
+    EXPECT_EQ(tagged.scheme, Scheme::Bilinear);
+    EXPECT_TRUE(tagged.leftHanded);
+}
+
+TEST(ObjIo, UnknownTagsAndStatementsWarn) {
+    ObjMesh m = parse(std::string(kQuad) + "t smoothtriangles 0/0/1 always\nf 1 2 3\nl 1 2\n", "w.obj");
+    ASSERT_EQ(m.warnings.size(), 2u);
+    EXPECT_EQ(m.warnings[0], "w.obj:5: unknown tag 'smoothtriangles' ignored");
+    EXPECT_EQ(m.warnings[1].rfind("w.obj:7: ", 0), 0u) << m.warnings[1];
+    EXPECT_EQ(m.numFaces(), 1);
+}
+
+TEST(ObjIo, NumberErrors) {
+    expectError("v 0 0 0\nv 1 x 0\n", 2, "cannot parse coordinate 'x'");
+    expectError("v 0 0 0\nv 1 1.5.2 0\n", 2, "cannot parse coordinate '1.5.2'");
+    expectError("v 0 0 nan\n", 1, "cannot parse coordinate");
+    expectError("v 0 0\n", 1, "vertex needs 3 coordinates");
+    expectError(std::string(kQuad) + "f 1 2 a\n", 5, "cannot parse face index 'a'");
+    expectError(std::string(kQuad) + "f 1 2 99999999999\n", 5, "cannot parse face index");
+    expectError(std::string(kQuad) + "t crease 2/1/0 0 1 sharp\n", 5, "cannot parse tag value 'sharp'");
+    expectError(std::string(kQuad) + "t corner 1/1/0 a 1\n", 5, "cannot parse tag integer 'a'");
+    expectError(std::string(kQuad) + "t crease 2-1-0 0 1 1\n", 5, "cannot parse counts '2-1-0'");
+}
+
+TEST(ObjIo, FaceErrors) {
+    expectError(std::string(kQuad) + "f 1 2\n", 5, "face has 2 corners, needs at least 3");
+    expectError(std::string(kQuad) + "f 1 0 2\n", 5, "face index 0");
+    expectError(std::string(kQuad) + "f 1 -5 2\n", 5, "face index -5 is before the first vertex");
+    // Out of range of the final vertex count: reported after the whole file, naming the face's line.
+    expectError("v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\nf 1 2 4\n# end\n", 5,
+                "face 1 index 4 is out of range (3 vertices)");
+}
+
+TEST(ObjIo, TagErrors) {
+    std::string q(kQuad);
+    expectError(q + "t crease 2/1/0 0 1\n", 5, "announces 3 arguments, has 2");
+    expectError(q + "t crease 2/1/0 0 1 1 2\n", 5, "announces 3 arguments, has 4");
+    expectError(q + "t crease 3/1/0 0 1 2 1\n", 5, "must be 2N/1/0 or 2N/N/0");
+    expectError(q + "t crease 4/3/0 0 1 1 2 1 1 1\n", 5, "must be 2N/1/0 or 2N/N/0");
+    expectError(q + "t crease 2/1/0 0 -1 1\n", 5, "negative vertex index -1");
+    expectError(q + "t corner 2/3/0 0 1 1 1 1\n", 5, "must be N/1/0 or N/N/0");
+    expectError(q + "t corner 1/1/0 -2 1\n", 5, "negative vertex index -2");
+    expectError(q + "t hole 1/1/0 0 1\n", 5, "must be N/0/0");
+    expectError(q + "t hole 1/0/0 -1\n", 5, "negative face index -1");
+    expectError(q + "t interpolateboundary 1/0/0 3\n", 5, "interpolateboundary value 3");
+    expectError(q + "t interpolateboundary 1/0/0 -1\n", 5, "interpolateboundary value -1");
+    expectError(q + "t interpolateboundary 2/0/0 1 1\n", 5, "must be 1/0/0");
+    expectError(q + "t creasemethod 0/0/1 smooth\n", 5, "creasemethod 'smooth' is not chaikin, uniform or normal");
+    expectError(q + "t creasemethod 0/0/0\n", 5, "must be 0/0/1");
+}
+
+TEST(ObjIo, MissingFile) {
+    try {
+        readObj("/nonexistent/dir/mesh.obj");
+        FAIL() << "no error";
+    } catch (const ObjError& e) {
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/mesh.obj: cannot open file");
+    }
+}
+
+// A small Topology with faceOffsets/faceVerts/faceHole filled by hand: writeObj uses nothing else.
+Topology twoFaceTopology() {
+    Topology t;
+    t.numVertices = 5;
+    t.faceOffsets = {0, 4, 7};
+    t.faceVerts = {0, 1, 2, 3, 1, 4, 2};
+    t.faceHole = {0, 0};
+    return t;
+}
+
+TEST(ObjIo, WriteThenParse) {
+    Topology t = twoFaceTopology();
+    const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2.0f / 3.0f, 1e-7f, -123456.789f};
+    std::ostringstream out;
+    writeObj(out, positions.data(), t);
+    std::istringstream in(out.str());
+    ObjMesh m = parseObj(in, "roundtrip");
+    EXPECT_EQ(m.positions, positions);  // %.9g round-trips floats exactly
+    EXPECT_EQ(m.faceSizes, (std::vector<int>{4, 3}));
+    EXPECT_EQ(m.faceVerts, t.faceVerts);
+}
+
+TEST(ObjIo, WriteSkipsHoles) {
+    Topology t = twoFaceTopology();
+    t.faceHole = {1, 0};
+    const std::vector<float> positions(15, 0.5f);
+    std::ostringstream out;
+    writeObj(out, positions.data(), t);
+    EXPECT_EQ(out.str(), "v 0.5 0.5 0.5\nv 0.5 0.5 0.5\nv 0.5 0.5 0.5\nv 0.5 0.5 0.5\nv 0.5 0.5 0.5\nf 2 5 3\n");
+}
+
+TEST(ObjIo, WriteToUnwritablePath) {
+    Topology t = twoFaceTopology();
+    const std::vector<float> positions(15, 0.0f);
+    try {
+        writeObj("/nonexistent/dir/out.obj", positions.data(), t);
+        FAIL() << "no error";
+    } catch (const ObjError& e) {
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/out.obj: cannot write file");
+    }
+}
+
+TEST(ObjIo, ReadsOpenSubdivShape) {
+    ObjMesh m = readObj(test::meshPath("osd/catmark_edgeonly.obj"));
+    EXPECT_GT(m.numVertices(), 0);
+    EXPECT_GT(m.numFaces(), 0);
+    EXPECT_EQ(m.corners, (std::vector<int>{16, 19, 36, 37, 38, 39}));
+    EXPECT_EQ(m.cornerSharpness, (std::vector<float>{10, 10, 10, 10, 2, 2}));
+    ASSERT_TRUE(m.boundary.has_value());
+    EXPECT_EQ(*m.boundary, BoundaryInterpolation::EdgeOnly);
+    EXPECT_TRUE(m.creasePairs.empty());
+    EXPECT_TRUE(m.warnings.empty());
+    for (int v : m.faceVerts) {
+        EXPECT_GE(v, 0);
+        EXPECT_LT(v, m.numVertices());
+    }
+}
+
+TEST(ObjIo, ReadsEveryTestMeshAndWritesItBack) {
+    // Every shape parses; writing level 0 as-is and reading it back gives the same mesh.
+    int files = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(test::meshPath(""))) {
+        if (entry.path().extension() != ".obj") continue;
+        ++files;
+        const std::string name = entry.path().string();
+        ObjMesh m = readObj(name);
+        Topology t;
+        t.numVertices = m.numVertices();
+        for (int f = 0; f < m.numFaces(); ++f) t.faceOffsets.push_back(t.faceOffsets.back() + m.faceSizes[f]);
+        t.faceVerts = m.faceVerts;
+        t.faceHole.assign(m.numFaces(), 0);
+        std::ostringstream out;
+        writeObj(out, m.positions.data(), t);
+        std::istringstream in(out.str());
+        ObjMesh back = parseObj(in, name);
+        EXPECT_EQ(back.positions, m.positions) << name;
+        EXPECT_EQ(back.faceSizes, m.faceSizes) << name;
+        EXPECT_EQ(back.faceVerts, m.faceVerts) << name;
+    }
+    EXPECT_GT(files, 40);
+}
+
+}  // namespace
+}  // namespace quadtri::io

@@ -1,0 +1,57 @@
+#include "tests/test_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "osd/cpu_evaluator.h"
+
+namespace quadtri::test {
+
+std::string meshPath(const std::string& relative) { return std::string(QUADTRI_TEST_MESHES) + "/" + relative; }
+
+RefinedMesh refineMesh(const std::string& relative, int maxLevel, Options options) {
+    RefinedMesh r;
+    r.mesh = io::readObj(meshPath(relative));
+    r.options = r.mesh.applyTags(options);
+    r.refiner = std::make_unique<Refiner>(r.mesh.descriptor(), r.options);
+    r.refiner->refineUniform(maxLevel);
+    r.positions = evaluateLevels(*r.refiner, r.mesh.positions, 3);
+    return r;
+}
+
+std::vector<std::vector<float>> evaluateLevels(const Refiner& refiner, const std::vector<float>& control, int width) {
+    std::vector<std::vector<float>> levels{control};
+    for (int L = 1; L <= refiner.maxLevel(); ++L) {
+        const StencilTable& table = refiner.levelStencils(L);
+        std::vector<float> out(size_t(table.numStencils()) * width);
+        CpuEvaluator::EvalStencils(levels.back().data(), BufferDescriptor(0, width, width), out.data(),
+                                   BufferDescriptor(0, width, width), table);
+        levels.push_back(std::move(out));
+    }
+    return levels;
+}
+
+double boundingBoxDiagonal(const std::vector<float>& xyz) {
+    double lo[3], hi[3];
+    for (int c = 0; c < 3; ++c) {
+        lo[c] = std::numeric_limits<double>::max();
+        hi[c] = -std::numeric_limits<double>::max();
+    }
+    for (size_t i = 0; i + 2 < xyz.size(); i += 3)
+        for (int c = 0; c < 3; ++c) {
+            lo[c] = std::min(lo[c], double(xyz[i + c]));
+            hi[c] = std::max(hi[c], double(xyz[i + c]));
+        }
+    double d2 = 0;
+    for (int c = 0; c < 3; ++c) d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+    return std::sqrt(d2);
+}
+
+double stencilWeightSum(const StencilTable& table, int i) {
+    double sum = 0;
+    for (int k = 0; k < table.sizes[i]; ++k) sum += table.weights[table.offsets[i] + k];
+    return sum;
+}
+
+}  // namespace quadtri::test

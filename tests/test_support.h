@@ -1,0 +1,34 @@
+// Shared helpers of the tests: mesh paths, refinement plus evaluation, geometry.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "far/refiner.h"
+#include "tools/obj_io.h"
+
+namespace quadtri::test {
+
+// Absolute path of a mesh under tests/meshes, e.g. meshPath("osd/catmark_cube.obj").
+std::string meshPath(const std::string& relative);
+
+// A mesh from tests/meshes refined to `maxLevel` with the file's tags applied over `options`.
+struct RefinedMesh {
+    io::ObjMesh mesh;
+    Options options;
+    std::unique_ptr<Refiner> refiner;
+    // positions[L]: 3 floats per vertex of level L, evaluated level by level with CpuEvaluator.
+    std::vector<std::vector<float>> positions;
+};
+RefinedMesh refineMesh(const std::string& relative, int maxLevel, Options options = Options());
+
+// Level-by-level evaluation of `width`-float data through the per-level tables.
+std::vector<std::vector<float>> evaluateLevels(const Refiner& refiner, const std::vector<float>& control, int width);
+
+double boundingBoxDiagonal(const std::vector<float>& xyz);
+
+// Sum of the weights of stencil i.
+double stencilWeightSum(const StencilTable& table, int i);
+
+}  // namespace quadtri::test

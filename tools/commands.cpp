@@ -1,0 +1,165 @@
+#include "tools/commands.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <vector>
+
+#include "far/refiner.h"
+#include "osd/cpu_evaluator.h"
+#include "tools/obj_io.h"
+
+namespace quadtri::cli {
+
+namespace {
+
+io::ObjMesh loadMesh(const MeshArgs& args) {
+    io::ObjMesh mesh = io::readObj(args.input);
+    for (const std::string& w : mesh.warnings) std::cerr << "quadtri: warning: " << w << "\n";
+    return mesh;
+}
+
+// Defaults, then the file's tags, then explicit flags.
+Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
+    Options options = mesh.applyTags(Options());
+    if (args.scheme) options.scheme = *args.scheme;
+    if (args.boundary) options.boundary = *args.boundary;
+    return options;
+}
+
+// Positions of level L evaluated from the control vertices with `table` (level 0: the input).
+std::vector<float> evaluate(const StencilTable* table, const io::ObjMesh& mesh) {
+    if (!table) return mesh.positions;
+    std::vector<float> out(size_t(table->numStencils()) * 3);
+    CpuEvaluator::EvalStencils(mesh.positions.data(), BufferDescriptor(0, 3, 3), out.data(),
+                               BufferDescriptor(0, 3, 3), *table);
+    return out;
+}
+
+int outputFaces(const Topology& t) {
+    return t.numFaces() - int(std::count_if(t.faceHole.begin(), t.faceHole.end(), [](uint8_t h) { return h != 0; }));
+}
+
+template <typename T>
+int countFlag(const std::vector<uint8_t>& flags, T flag) {
+    return int(std::count_if(flags.begin(), flags.end(), [flag](uint8_t f) { return (f & flag) != 0; }));
+}
+
+template <typename T>
+int countPositive(const std::vector<T>& values, T threshold = T(0)) {
+    return int(std::count_if(values.begin(), values.end(), [threshold](T v) { return v > threshold; }));
+}
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void printBase(const Topology& t, const Options& options) {
+    std::printf("scheme %s, boundary %s, crease method %s\n", toString(options.scheme), toString(options.boundary),
+                toString(options.creaseMethod));
+    std::printf("vertices %d, faces %d, edges %d, holes %d\n", t.numVertices, t.numFaces(), t.numEdges(),
+                t.numFaces() - outputFaces(t));
+
+    std::map<int, int> sizes;
+    for (int f = 0; f < t.numFaces(); ++f) ++sizes[t.faceSize(f)];
+    std::printf("face sizes:");
+    for (auto [size, count] : sizes) std::printf(" %d-gon %d", size, count);
+    std::printf("\n");
+
+    std::printf("edges: boundary %d, non-manifold %d, seam %d, sharp %d (infinite %d)\n",
+                countFlag(t.edgeFlags, kEdgeBoundary), countFlag(t.edgeFlags, kEdgeNonManifold),
+                countFlag(t.edgeFlags, kEdgeSeam), countPositive(t.edgeSharpness),
+                countPositive(t.edgeSharpness, kInfiniteSharpness - 1e-6f));
+    std::printf("vertices: boundary %d, non-manifold %d, seam %d, corner %d, sharp %d\n",
+                countFlag(t.vertFlags, kVertexBoundary), countFlag(t.vertFlags, kVertexNonManifold),
+                countFlag(t.vertFlags, kVertexSeam), countFlag(t.vertFlags, kVertexCorner),
+                countPositive(t.vertSharpness));
+
+    // Vertex types by incident (quad-like, triangle) faces.
+    std::map<std::pair<int, int>, int> types;
+    for (int v = 0; v < t.numVertices; ++v) {
+        VertexFaceCounts c = countVertexFaces(t, v);
+        ++types[{c.quads, c.triangles}];
+    }
+    std::printf("vertex types (quads,triangles):");
+    for (auto [type, count] : types) std::printf(" (%d,%d) %d", type.first, type.second, count);
+    std::printf("\n");
+}
+
+}  // namespace
+
+int runRefine(const RefineArgs& args) {
+    io::ObjMesh mesh = loadMesh(args.mesh);
+    Refiner refiner(mesh.descriptor(), makeOptions(args.mesh, mesh));
+    refiner.refineUniform(args.level);
+    StencilTable table;
+    if (args.level > 0) table = refiner.factorizedStencils(args.level);
+    std::vector<float> positions = evaluate(args.level > 0 ? &table : nullptr, mesh);
+    const Topology& top = refiner.level(args.level);
+    io::writeObj(args.output, positions.data(), top);
+    std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,
+                top.numVertices, outputFaces(top), args.output.c_str());
+    return 0;
+}
+
+int runInfo(const InfoArgs& args) {
+    io::ObjMesh mesh = loadMesh(args.mesh);
+    Options options = makeOptions(args.mesh, mesh);
+    Refiner refiner(mesh.descriptor(), options);
+    std::printf("%s\n", args.mesh.input.c_str());
+    printBase(refiner.level(0), options);
+
+    refiner.refineUniform(args.level);
+    std::printf("\n| level | vertices | faces | stencils | level table bytes | factorized table bytes |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|\n");
+    for (int L = 0; L <= args.level; ++L) {
+        const Topology& t = refiner.level(L);
+        if (L == 0) {
+            std::printf("| 0 | %d | %d | - | - | - |\n", t.numVertices, outputFaces(t));
+            continue;
+        }
+        const StencilTable& perLevel = refiner.levelStencils(L);
+        std::printf("| %d | %d | %d | %d | %zu | %zu |\n", L, t.numVertices, outputFaces(t), perLevel.numStencils(),
+                    perLevel.bytes(), refiner.factorizedStencils(L).bytes());
+    }
+    return 0;
+}
+
+int runDemo(const DemoArgs& args) {
+    io::ObjMesh mesh = loadMesh(args.mesh);
+    Options options = makeOptions(args.mesh, mesh);
+    std::filesystem::create_directories(args.outDir);
+    const std::string stem = std::filesystem::path(args.mesh.input).stem().string();
+
+    std::printf("| level | vertices | faces | stencils | table bytes | analyzer ms | eval ms |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (int L = 1; L <= args.levels; ++L) {
+        auto start = std::chrono::steady_clock::now();
+        Refiner refiner(mesh.descriptor(), options);
+        refiner.refineUniform(L);
+        StencilTable table = refiner.factorizedStencils(L);
+        double analyzerMs = msSince(start);
+
+        std::vector<double> evalMs;
+        std::vector<float> positions;
+        for (int run = 0; run < 7; ++run) {
+            start = std::chrono::steady_clock::now();
+            positions = evaluate(&table, mesh);
+            evalMs.push_back(msSince(start));
+        }
+        std::nth_element(evalMs.begin(), evalMs.begin() + 3, evalMs.end());
+
+        const Topology& t = refiner.level(L);
+        std::printf("| %d | %d | %d | %d | %zu | %.3f | %.3f |\n", L, t.numVertices, outputFaces(t), table.numStencils(),
+                    table.bytes(), analyzerMs, evalMs[3]);
+        std::fflush(stdout);
+        io::writeObj((std::filesystem::path(args.outDir) / (stem + "_level" + std::to_string(L) + ".obj")).string(),
+                     positions.data(), t);
+    }
+    return 0;
+}
+
+}  // namespace quadtri::cli

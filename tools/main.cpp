@@ -1,0 +1,84 @@
+// quadtri: refine OBJ meshes with the quad/triangle analyzer, report on them, time them.
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+#include <map>
+#include <new>
+
+#include "far/options.h"
+#include "tools/commands.h"
+#include "tools/obj_io.h"
+
+namespace {
+
+using namespace quadtri;
+
+void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
+    static const std::map<std::string, Scheme> schemes{{"stam-loop", Scheme::StamLoop},
+                                                       {"bilinear", Scheme::Bilinear}};
+    static const std::map<std::string, BoundaryInterpolation> boundaries{
+        {"edge-only", BoundaryInterpolation::EdgeOnly},
+        {"edge-and-corner", BoundaryInterpolation::EdgeAndCorner},
+        {"none", BoundaryInterpolation::None}};
+    cmd.add_option("input", args.input, "Input OBJ file")->required();
+    cmd.add_option_function<Scheme>(
+           "--scheme", [&args](const Scheme& s) { args.scheme = s; }, "Subdivision scheme (default stam-loop)")
+        ->transform(CLI::CheckedTransformer(schemes));
+    cmd.add_option_function<BoundaryInterpolation>(
+           "--boundary", [&args](const BoundaryInterpolation& b) { args.boundary = b; },
+           "Boundary interpolation; overrides the file's interpolateboundary tag (default edge-only)")
+        ->transform(CLI::CheckedTransformer(boundaries));
+}
+
+CLI::Option* addLevel(CLI::App& cmd, const char* name, int& level, const char* help) {
+    return cmd.add_option(name, level, help)->check(CLI::Range(0, cli::kMaxLevel))->capture_default_str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"quadtri: quad/triangle subdivision of OBJ meshes", "quadtri"};
+    app.require_subcommand(1);
+
+    cli::RefineArgs refine;
+    CLI::App* refineCmd = app.add_subcommand("refine", "Refine a mesh uniformly and write the last level as OBJ");
+    addMeshFlags(*refineCmd, refine.mesh);
+    addLevel(*refineCmd, "--level,-l", refine.level, "Refinement level")->required();
+    refineCmd->add_option("-o,--output", refine.output, "Output OBJ file")->required();
+
+    cli::InfoArgs info;
+    CLI::App* infoCmd = app.add_subcommand("info", "Print topology statistics and table sizes per level");
+    addMeshFlags(*infoCmd, info.mesh);
+    addLevel(*infoCmd, "--level,-l", info.level, "Deepest level reported");
+
+    cli::DemoArgs demo;
+    CLI::App* demoCmd = app.add_subcommand("demo", "Time the analyzer and evaluator per level and write each level");
+    addMeshFlags(*demoCmd, demo.mesh);
+    addLevel(*demoCmd, "--levels", demo.levels, "Levels 1..N are timed and written");
+    demoCmd->add_option("--out-dir", demo.outDir, "Folder for <stem>_level<L>.obj")->capture_default_str();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help
+        std::cerr << "quadtri: " << e.what() << "\n";
+        return 2;
+    }
+
+    const std::string& input = *refineCmd ? refine.mesh.input : *infoCmd ? info.mesh.input : demo.mesh.input;
+    try {
+        if (*refineCmd) return cli::runRefine(refine);
+        if (*infoCmd) return cli::runInfo(info);
+        return cli::runDemo(demo);
+    } catch (const io::ObjError& e) {
+        std::cerr << "quadtri: " << e.what() << "\n";  // already "file:line: problem"
+    } catch (const TopologyError& e) {
+        std::cerr << "quadtri: " << input << ": " << e.what() << "\n";
+    } catch (const std::bad_alloc&) {
+        std::cerr << "quadtri: out of memory\n";
+    } catch (const std::exception& e) {
+        std::cerr << "quadtri: " << e.what() << "\n";
+    }
+    return 2;
+}

@@ -1,0 +1,50 @@
+// Wavefront OBJ with OpenSubdiv's tags (`t crease`, `t corner`, `t hole`, `t interpolateboundary`,
+// `t creasemethod`), as described in shared/meshes/README.md.
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "far/options.h"
+#include "far/topology.h"
+
+namespace quadtri::io {
+
+// A malformed file. The message starts with "file:line: ".
+class ObjError : public std::runtime_error {
+public:
+    explicit ObjError(const std::string& what) : std::runtime_error(what) {}
+};
+
+struct ObjMesh {
+    std::vector<float> positions;  // 3 floats per `v` line
+    std::vector<int> faceSizes;    // corners per `f` line
+    std::vector<int> faceVerts;    // 0-based position indices
+    std::vector<int> creasePairs;  // 2 per crease
+    std::vector<float> creaseSharpness;
+    std::vector<int> corners;
+    std::vector<float> cornerSharpness;
+    std::vector<int> holes;
+    std::optional<BoundaryInterpolation> boundary;  // from `t interpolateboundary`
+    std::optional<CreaseMethod> creaseMethod;       // from `t creasemethod`
+    std::vector<std::string> warnings;              // "file:line: ..." for ignored content
+
+    int numVertices() const { return int(positions.size() / 3); }
+    int numFaces() const { return int(faceSizes.size()); }
+    // A view of the arrays above; valid while this mesh lives.
+    TopologyDescriptor descriptor() const;
+    // `base` with the boundary and crease method replaced where the file has tags for them.
+    Options applyTags(Options base) const;
+};
+
+ObjMesh parseObj(std::istream& in, const std::string& name);
+ObjMesh readObj(const std::string& path);  // ObjError if the file cannot be opened
+
+// Writes positions (3 floats each, %.9g) and the non-hole faces of `topology`, 1-based.
+void writeObj(std::ostream& out, const float* positions, const Topology& topology);
+void writeObj(const std::string& path, const float* positions, const Topology& topology);
+
+}  // namespace quadtri::io
