@@ -41,7 +41,21 @@ demo)
 test)
     install_missing
     build
-    ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+    status=0
+    ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" | tee "$BUILD_DIR/ctest.out" || status=$?
+    # ctest lists skipped tests without their reason: print each one's reason from the log, then
+    # the totals once more so they stay the last line.
+    log="$BUILD_DIR/Testing/Temporary/LastTest.log"
+    reasons=$(awk '/: Skipped$/ {getline reason; want=1; next}
+                   want && /^\[  SKIPPED \]/ {sub(/ \(.*/, ""); print "  " $4 ": " reason; want=0}' "$log" 2>/dev/null || true)
+    if [ -n "$reasons" ]; then
+        skipped=$(printf '%s\n' "$reasons" | wc -l)
+        echo "Skipped, with the reason each test gave:"
+        printf '%s\n' "$reasons"
+        read -r failed total < <(sed -n 's/.* \([0-9]*\) tests failed out of \([0-9]*\).*/\1 \2/p' "$BUILD_DIR/ctest.out")
+        echo "ctest: $((total - failed - skipped)) passed, $failed failed, $skipped skipped"
+    fi
+    exit $status
     ;;
 *)
     echo "usage: ./run.sh demo | test" >&2

@@ -15,7 +15,7 @@ enum class Scheme {
 enum class BoundaryInterpolation {
     EdgeOnly,       // boundary edges sharp; a corner vertex (1 face, 2 edges) follows the crease rule
     EdgeAndCorner,  // boundary edges sharp; a corner vertex is fixed
-    None,           // boundary edges sharp; faces at boundary vertices become holes (not output)
+    None,           // boundary edges sharp; faces at non-sharp boundary vertices become holes
 };
 
 enum class CreaseMethod {
@@ -55,10 +55,20 @@ struct TopologyDescriptor {
     const int* holeIndices = nullptr;  // face indices
 };
 
-// Malformed topology or an unsatisfiable request. The message names the face, vertex or level.
+// Malformed topology or an unsatisfiable request. The message names the face, vertex or level;
+// component() and index() say which input item is at fault, so that a file reader can point at
+// the line it came from.
 class TopologyError : public std::runtime_error {
 public:
-    explicit TopologyError(const std::string& what) : std::runtime_error(what) {}
+    enum class Component { None, Face, Crease, Corner, Hole };
+    explicit TopologyError(const std::string& what, Component component = Component::None, int index = -1)
+        : std::runtime_error(what), component_(component), index_(index) {}
+    Component component() const { return component_; }
+    int index() const { return index_; }
+
+private:
+    Component component_;
+    int index_;
 };
 
 const char* toString(Scheme scheme);

@@ -120,6 +120,12 @@ StencilTableD buildLevelStencils(const Topology& t, const ChildNumbering& num, c
     table.numSourceVertices = t.numVertices;
     table.sizes.reserve(numChildren);
     table.offsets.reserve(numChildren);
+    // Reserve an upper bound of the entries: untouched reserved pages cost nothing, while
+    // growing by doubling would copy and touch the arrays several times over.
+    std::size_t bound = 4 * std::size_t(t.numEdges()) + t.numVertices;
+    for (int f = 0; f < t.numFaces(); ++f) bound += std::size_t(t.faceSize(f)) * (1 + 2 * t.faceSize(f));
+    table.indices.reserve(bound);
+    table.weights.reserve(bound);
     SparseAccumulator acc(t.numVertices);
     Level level{t, acc};
     const bool linear = options.scheme == Scheme::Bilinear;

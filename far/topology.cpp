@@ -233,7 +233,8 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
         const int e = findEdge(t, a, b);
         if (e < 0)
             throw TopologyError("crease " + std::to_string(i) + ": vertices " + std::to_string(a) + " and " +
-                                std::to_string(b) + " do not share an edge");
+                                std::to_string(b) + " do not share an edge",
+                                TopologyError::Component::Crease, i);
         t.edgeSharpness[e] = desc.creaseWeights[i];
     }
     for (int i = 0; i < desc.numCorners; ++i) t.vertSharpness[desc.cornerVertexIndices[i]] = desc.cornerWeights[i];

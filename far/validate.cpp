@@ -1,6 +1,7 @@
 // Input validation: every index and value the analyzer will trust is checked here first.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -10,7 +11,11 @@ namespace quadtri {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& what) { throw TopologyError(what); }
+using Component = TopologyError::Component;
+
+[[noreturn]] void fail(const std::string& what, Component component = Component::None, int index = -1) {
+    throw TopologyError(what, component, index);
+}
 
 std::string face(int f) { return "face " + std::to_string(f); }
 
@@ -20,9 +25,13 @@ void checkArray(int count, const void* array, const char* countName, const char*
         fail(std::string(arrayName) + " is null but " + countName + " is " + std::to_string(count));
 }
 
-void checkSharpness(float s, const std::string& what) {
-    if (!std::isfinite(s)) fail(what + ": sharpness is not a finite number");
-    if (s < 0) fail(what + ": negative sharpness " + std::to_string(s));
+void checkSharpness(float s, const std::string& what, Component component, int index) {
+    if (!std::isfinite(s)) fail(what + ": sharpness is not a finite number", component, index);
+    if (s < 0) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", double(s));
+        fail(what + ": negative sharpness " + value, component, index);
+    }
 }
 
 }  // namespace
@@ -41,38 +50,42 @@ void validateDescriptor(const TopologyDescriptor& d) {
     std::vector<int> sorted;
     for (int f = 0; f < d.numFaces; ++f) {
         const int n = d.numVertsPerFace[f];
-        if (n < 3) fail(face(f) + " has " + std::to_string(n) + " vertices; a face needs at least 3");
+        if (n < 3) fail(face(f) + " has " + std::to_string(n) + " vertices; a face needs at least 3", Component::Face, f);
         const int* verts = d.faceVertIndices + total;
         total += n;
-        if (total > (1LL << 31) - 1) fail(face(f) + ": more than 2^31 face-vertex indices in total");
+        if (total > (1LL << 31) - 1) fail(face(f) + ": more than 2^31 face-vertex indices in total", Component::Face, f);
         for (int i = 0; i < n; ++i)
             if (verts[i] < 0 || verts[i] >= d.numVertices)
                 fail(face(f) + ": vertex index " + std::to_string(verts[i]) + " is out of range [0, " +
-                     std::to_string(d.numVertices) + ")");
+                     std::to_string(d.numVertices) + ")",
+                     Component::Face, f);
         sorted.assign(verts, verts + n);
         std::sort(sorted.begin(), sorted.end());
         const auto dup = std::adjacent_find(sorted.begin(), sorted.end());
-        if (dup != sorted.end()) fail(face(f) + ": vertex " + std::to_string(*dup) + " appears more than once");
+        if (dup != sorted.end())
+            fail(face(f) + ": vertex " + std::to_string(*dup) + " appears more than once", Component::Face, f);
     }
     for (int i = 0; i < d.numCreases; ++i) {
         const int a = d.creaseVertexPairs[2 * i], b = d.creaseVertexPairs[2 * i + 1];
         const std::string what = "crease " + std::to_string(i) + " (vertices " + std::to_string(a) + ", " +
                                  std::to_string(b) + ")";
-        if (a < 0 || a >= d.numVertices || b < 0 || b >= d.numVertices) fail(what + ": vertex index out of range");
-        if (a == b) fail(what + ": both ends are the same vertex");
-        checkSharpness(d.creaseWeights[i], what);
+        if (a < 0 || a >= d.numVertices || b < 0 || b >= d.numVertices)
+            fail(what + ": vertex index out of range", Component::Crease, i);
+        if (a == b) fail(what + ": both ends are the same vertex", Component::Crease, i);
+        checkSharpness(d.creaseWeights[i], what, Component::Crease, i);
     }
     for (int i = 0; i < d.numCorners; ++i) {
         const int v = d.cornerVertexIndices[i];
         const std::string what = "corner " + std::to_string(i) + " (vertex " + std::to_string(v) + ")";
-        if (v < 0 || v >= d.numVertices) fail(what + ": vertex index out of range");
-        checkSharpness(d.cornerWeights[i], what);
+        if (v < 0 || v >= d.numVertices) fail(what + ": vertex index out of range", Component::Corner, i);
+        checkSharpness(d.cornerWeights[i], what, Component::Corner, i);
     }
     for (int i = 0; i < d.numHoles; ++i) {
         const int f = d.holeIndices[i];
         if (f < 0 || f >= d.numFaces)
             fail("hole " + std::to_string(i) + ": face index " + std::to_string(f) + " is out of range [0, " +
-                 std::to_string(d.numFaces) + ")");
+                 std::to_string(d.numFaces) + ")",
+                 Component::Hole, i);
     }
 }
 

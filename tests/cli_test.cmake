@@ -100,7 +100,12 @@ expect_contains("${ERR}" "badnum.obj:2:")
 
 file(WRITE "${WORK}/repeated.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 3 4\n")
 run(2 refine "${WORK}/repeated.obj" --level 1 -o "${WORK}/x.obj")
-expect_contains("${ERR}" "face 1")
+expect_contains("${ERR}" "repeated.obj:6: face 1: vertex 2 appears more than once")
+
+# A crease tag on two vertices that share no edge names the tag's line.
+file(WRITE "${WORK}/crease.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\nt crease 2/1/0 1 3 2.0\n")
+run(2 info "${WORK}/crease.obj")
+expect_contains("${ERR}" "crease.obj:7: crease 0: vertices 1 and 3 do not share an edge")
 
 run(2 refine "${CYLINDER}" --level 1 --scheme catmark -o "${WORK}/x.obj")
 expect_contains("${ERR}" "catmark")

@@ -2,9 +2,12 @@
 // Every mesh here is pure topology (the rules tests compare weights, not positions).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "far/refiner.h"
@@ -130,10 +133,53 @@ inline LocalMesh buildGrid(int w, int h, bool triangles) {
     return m;
 }
 
+// Topological Catmull-Clark split (my own, no weights): a face of k corners becomes k quads
+// around a new face-centre vertex. Vertices: the old ones, then one per edge (first seen
+// order), then one per face. The centre of a k-gon gets valence k.
+inline LocalMesh quadrangulate(const LocalMesh& m) {
+    LocalMesh out;
+    std::vector<std::pair<std::pair<int, int>, int>> edgeIds;  // small meshes: linear search
+    int next = m.numVertices;
+    auto edgeVertex = [&](int a, int b) {
+        const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+        for (auto& [k, id] : edgeIds)
+            if (k == key) return id;
+        edgeIds.push_back({key, next});
+        return next++;
+    };
+    std::vector<std::vector<int>> mids(size_t(m.numFaces()));
+    int offset = 0;
+    for (int f = 0; f < m.numFaces(); ++f) {
+        const int k = m.faceSizes[f];
+        for (int i = 0; i < k; ++i)
+            mids[f].push_back(edgeVertex(m.faceVerts[offset + i], m.faceVerts[offset + (i + 1) % k]));
+        offset += k;
+    }
+    offset = 0;
+    for (int f = 0; f < m.numFaces(); ++f) {
+        const int k = m.faceSizes[f];
+        const int centre = next++;
+        for (int i = 0; i < k; ++i)
+            out.addFace({m.faceVerts[offset + i], mids[f][i], centre, mids[f][(i + k - 1) % k]});
+        offset += k;
+    }
+    out.numVertices = next;
+    return out;
+}
+
+// The faces of a refined level as a LocalMesh (to run the same oracles one level further).
+inline LocalMesh fromTopology(const Topology& t) {
+    LocalMesh m;
+    m.numVertices = t.numVertices;
+    for (int f = 0; f < t.numFaces(); ++f)
+        m.addFace(std::vector<int>(t.faceVerts.begin() + t.faceOffsets[f], t.faceVerts.begin() + t.faceOffsets[f + 1]));
+    return m;
+}
+
 // ---- Index helpers following the documented vertex order of level L (face points of the
 // non-triangle faces of level L-1, then edge points, then vertex points). ----
 
-inline int findEdge(const Topology& t, int a, int b) {
+inline int edgeBetween(const Topology& t, int a, int b) {
     for (int e = 0; e < t.numEdges(); ++e) {
         const int u = t.edgeVerts[2 * e], v = t.edgeVerts[2 * e + 1];
         if ((u == a && v == b) || (u == b && v == a)) return e;

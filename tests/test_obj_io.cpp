@@ -61,6 +61,14 @@ TEST(ObjIo, SlashFormsAndNegativeIndices) {
     EXPECT_EQ(r.faceVerts, (std::vector<int>{0, 1, 2, 3, 2, 1}));
 }
 
+TEST(ObjIo, WindowsLineEndingsAndPlusSigns) {
+    ObjMesh m = parse("v +1 0 0\r\nv 0 1 0\r\nv 0 0 +1.5\r\nf 1 2 +3\r\nt interpolateboundary 1/0/0 1\r\n");
+    EXPECT_EQ(m.positions, (std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 1.5f}));
+    EXPECT_EQ(m.faceVerts, (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(m.boundary, BoundaryInterpolation::EdgeAndCorner);
+    EXPECT_TRUE(m.warnings.empty());
+}
+
 TEST(ObjIo, FacesBeforeVertices) {
     ObjMesh m = parse("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
     EXPECT_EQ(m.faceVerts, (std::vector<int>{0, 1, 2}));
@@ -145,6 +153,8 @@ TEST(ObjIo, NumberErrors) {
     expectError("v 0 0 0\nv 1 x 0\n", 2, "cannot parse coordinate 'x'");
     expectError("v 0 0 0\nv 1 1.5.2 0\n", 2, "cannot parse coordinate '1.5.2'");
     expectError("v 0 0 nan\n", 1, "cannot parse coordinate");
+    expectError("v 0 0 +-1\n", 1, "cannot parse coordinate '+-1'");
+    expectError("v 0 0 1e60\n", 1, "cannot parse coordinate '1e60'");
     expectError("v 0 0\n", 1, "vertex needs 3 coordinates");
     expectError(std::string(kQuad) + "f 1 2 a\n", 5, "cannot parse face index 'a'");
     expectError(std::string(kQuad) + "f 1 2 99999999999\n", 5, "cannot parse face index");
@@ -159,7 +169,7 @@ TEST(ObjIo, FaceErrors) {
     expectError(std::string(kQuad) + "f 1 -5 2\n", 5, "face index -5 is before the first vertex");
     // Out of range of the final vertex count: reported after the whole file, naming the face's line.
     expectError("v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\nf 1 2 4\n# end\n", 5,
-                "face 1 index 4 is out of range (3 vertices)");
+                "face index 4 is out of range (3 vertices)");
 }
 
 TEST(ObjIo, TagErrors) {

@@ -1,1 +1,272 @@
-// placeholder
+// Malformed descriptors must be refused with a TopologyError naming the offending face, vertex,
+// crease, corner or hole; never a crash, another exception type, or silent acceptance.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "far/refiner.h"
+#include "tests/local_meshes.h"
+
+namespace {
+
+using namespace quadtri;
+using namespace quadtri::test;
+
+// A cube: 8 vertices, 6 quads (face 2 is the one the tests break).
+LocalMesh cube() {
+    LocalMesh m;
+    m.numVertices = 8;
+    m.addFace({0, 1, 3, 2});
+    m.addFace({4, 6, 7, 5});
+    m.addFace({0, 4, 5, 1});
+    m.addFace({2, 3, 7, 6});
+    m.addFace({0, 2, 6, 4});
+    m.addFace({1, 5, 7, 3});
+    return m;
+}
+
+// A cube whose face 2 has the given corners.
+LocalMesh cubeWithFace2(const std::vector<int>& corners) {
+    const LocalMesh c = cube();
+    LocalMesh m;
+    m.numVertices = c.numVertices;
+    int offset = 0;
+    for (int f = 0; f < c.numFaces(); ++f) {
+        const int n = c.faceSizes[f];
+        if (f == 2)
+            m.addFace(corners);
+        else
+            m.addFace(std::vector<int>(c.faceVerts.begin() + offset, c.faceVerts.begin() + offset + n));
+        offset += n;
+    }
+    return m;
+}
+
+// The TopologyError message of building a Refiner, or "" when none was thrown. Any other
+// exception propagates and fails the test.
+std::string errorOf(const TopologyDescriptor& d, const Options& o = Options()) {
+    try {
+        Refiner refiner(d, o);
+    } catch (const TopologyError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+void expectRefused(const TopologyDescriptor& d, const std::vector<std::string>& mustContain,
+                   const std::string& what) {
+    const std::string message = errorOf(d);
+    EXPECT_FALSE(message.empty()) << what << ": accepted";
+    for (const std::string& s : mustContain)
+        EXPECT_NE(message.find(s), std::string::npos) << what << ": message \"" << message << "\" lacks \"" << s << "\"";
+}
+
+TEST(Validation, ValidCubeIsAccepted) {
+    const LocalMesh m = cube();
+    EXPECT_EQ(errorOf(m.descriptor()), "");
+}
+
+TEST(Validation, FaceWithFewerThanThreeVertices) {
+    expectRefused(cubeWithFace2({0, 4}).descriptor(), {"face 2", "2 vertices", "at least 3"}, "2-gon");
+    expectRefused(cubeWithFace2({0}).descriptor(), {"face 2", "1 vertices", "at least 3"}, "1-gon");
+    expectRefused(cubeWithFace2({}).descriptor(), {"face 2", "0 vertices", "at least 3"}, "0-gon");
+    // A negative count: face 2 claims -1 corners (the arrays are otherwise the cube's).
+    LocalMesh m = cube();
+    m.faceSizes[2] = -1;
+    expectRefused(m.descriptor(), {"face 2", "at least 3"}, "negative size");
+}
+
+TEST(Validation, VertexIndexOutOfRange) {
+    expectRefused(cubeWithFace2({0, 4, 8, 1}).descriptor(), {"face 2", "vertex index 8", "out of range"}, "index 8");
+    expectRefused(cubeWithFace2({0, 4, -1, 1}).descriptor(), {"face 2", "vertex index -1", "out of range"},
+                  "index -1");
+    expectRefused(cubeWithFace2({0, 4, 1000000, 1}).descriptor(), {"face 2", "1000000", "out of range"},
+                  "index 1000000");
+}
+
+TEST(Validation, VertexRepeatedInAFace) {
+    expectRefused(cubeWithFace2({0, 4, 0, 1}).descriptor(), {"face 2", "vertex 0", "more than once"}, "0 twice");
+    expectRefused(cubeWithFace2({5, 4, 5}).descriptor(), {"face 2", "vertex 5", "more than once"}, "triangle 5 4 5");
+}
+
+TEST(Validation, CreaseOnAPairThatIsNotAnEdge) {
+    LocalMesh m = cube();
+    m.creasePairs = {0, 1, 0, 7};  // 0-1 is an edge, 0-7 is the cube's diagonal
+    m.creaseWeights = {2.0f, 2.0f};
+    expectRefused(m.descriptor(), {"crease 1", "0 and 7", "edge"}, "diagonal crease");
+    m.creasePairs = {0, 1, 0, 3};  // 0-3 is a face diagonal
+    expectRefused(m.descriptor(), {"crease 1", "0 and 3", "edge"}, "face-diagonal crease");
+    m.creasePairs = {0, 1, 2, 2};
+    expectRefused(m.descriptor(), {"crease 1", "same vertex"}, "degenerate crease");
+    m.creasePairs = {0, 1, 2, 9};
+    expectRefused(m.descriptor(), {"crease 1", "9", "out of range"}, "crease vertex out of range");
+    m.creasePairs = {-3, 1, 0, 1};
+    expectRefused(m.descriptor(), {"crease 0", "-3", "out of range"}, "negative crease vertex");
+}
+
+TEST(Validation, NegativeOrNaNCreaseSharpness) {
+    LocalMesh m = cube();
+    m.creasePairs = {0, 1, 1, 3};
+    m.creaseWeights = {1.0f, -1.0f};
+    expectRefused(m.descriptor(), {"crease 1", "negative"}, "negative crease");
+    m.creaseWeights = {std::numeric_limits<float>::quiet_NaN(), 1.0f};
+    expectRefused(m.descriptor(), {"crease 0", "sharpness"}, "NaN crease");
+    // A valid sharp crease is accepted.
+    m.creaseWeights = {1.0f, 10.0f};
+    EXPECT_EQ(errorOf(m.descriptor()), "");
+}
+
+TEST(Validation, CornerProblems) {
+    LocalMesh m = cube();
+    m.corners = {2, 5};
+    m.cornerWeights = {1.0f, -2.0f};
+    expectRefused(m.descriptor(), {"corner 1", "vertex 5", "negative"}, "negative corner");
+    m.cornerWeights = {std::numeric_limits<float>::quiet_NaN(), 1.0f};
+    expectRefused(m.descriptor(), {"corner 0", "vertex 2", "sharpness"}, "NaN corner");
+    m.cornerWeights = {1.0f, 1.0f};
+    m.corners = {2, 8};
+    expectRefused(m.descriptor(), {"corner 1", "vertex 8", "out of range"}, "corner out of range");
+    m.corners = {-1, 2};
+    expectRefused(m.descriptor(), {"corner 0", "vertex -1", "out of range"}, "negative corner vertex");
+    m.corners = {2, 5};
+    EXPECT_EQ(errorOf(m.descriptor()), "");
+}
+
+TEST(Validation, HoleFaceOutOfRange) {
+    const LocalMesh m = cube();
+    for (int bad : {6, -1, 100}) {
+        const std::vector<int> holes = {1, bad};
+        TopologyDescriptor d = m.descriptor();
+        d.numHoles = 2;
+        d.holeIndices = holes.data();
+        expectRefused(d, {"hole 1", "face index " + std::to_string(bad), "out of range"}, "hole " + std::to_string(bad));
+    }
+    const std::vector<int> ok = {1, 5};
+    TopologyDescriptor d = m.descriptor();
+    d.numHoles = 2;
+    d.holeIndices = ok.data();
+    EXPECT_EQ(errorOf(d), "");
+}
+
+TEST(Validation, NegativeCounts) {
+    const LocalMesh m = cube();
+    TopologyDescriptor d = m.descriptor();
+    d.numVertices = -1;
+    expectRefused(d, {"numVertices", "negative"}, "numVertices < 0");
+    d = m.descriptor();
+    d.numFaces = -2;
+    expectRefused(d, {"numFaces", "negative"}, "numFaces < 0");
+    d = m.descriptor();
+    d.numCreases = -1;
+    expectRefused(d, {"numCreases", "negative"}, "numCreases < 0");
+    d = m.descriptor();
+    d.numCorners = -1;
+    expectRefused(d, {"numCorners", "negative"}, "numCorners < 0");
+    d = m.descriptor();
+    d.numHoles = -1;
+    expectRefused(d, {"numHoles", "negative"}, "numHoles < 0");
+    // Vertices too few for the faces.
+    d = m.descriptor();
+    d.numVertices = 7;
+    expectRefused(d, {"face 1", "vertex index 7", "out of range"}, "numVertices 7");
+}
+
+TEST(Validation, NullArraysWithNonzeroCounts) {
+    const LocalMesh m = cube();
+    const std::vector<int> pairs = {0, 1};
+    const std::vector<float> weights = {1.0f};
+    const std::vector<int> one = {0};
+    TopologyDescriptor d = m.descriptor();
+    d.numVertsPerFace = nullptr;
+    expectRefused(d, {"numVertsPerFace", "null"}, "null numVertsPerFace");
+    d = m.descriptor();
+    d.faceVertIndices = nullptr;
+    expectRefused(d, {"faceVertIndices", "null"}, "null faceVertIndices");
+    d = m.descriptor();
+    d.numCreases = 1;
+    d.creaseWeights = weights.data();
+    expectRefused(d, {"creaseVertexPairs", "null"}, "null creaseVertexPairs");
+    d = m.descriptor();
+    d.numCreases = 1;
+    d.creaseVertexPairs = pairs.data();
+    expectRefused(d, {"creaseWeights", "null"}, "null creaseWeights");
+    d = m.descriptor();
+    d.numCorners = 1;
+    d.cornerWeights = weights.data();
+    expectRefused(d, {"cornerVertexIndices", "null"}, "null cornerVertexIndices");
+    d = m.descriptor();
+    d.numCorners = 1;
+    d.cornerVertexIndices = one.data();
+    expectRefused(d, {"cornerWeights", "null"}, "null cornerWeights");
+    d = m.descriptor();
+    d.numHoles = 1;
+    expectRefused(d, {"holeIndices", "null"}, "null holeIndices");
+    // Zero counts with null arrays are fine: an empty mesh.
+    TopologyDescriptor empty;
+    EXPECT_EQ(errorOf(empty), "");
+}
+
+TEST(Validation, MemoryBudget) {
+    const LocalMesh m = cube();
+    Options tiny;
+    tiny.memoryBudgetBytes = 1000;
+    std::unique_ptr<Refiner> refiner;
+    ASSERT_NO_THROW(refiner = std::make_unique<Refiner>(m.descriptor(), tiny));
+    const std::size_t estimate = refiner->estimateLevelBytes(1);
+    EXPECT_GT(estimate, 1000u);
+    std::string message;
+    try {
+        refiner->refineUniform(1);
+    } catch (const TopologyError& e) {
+        message = e.what();
+    }
+    ASSERT_FALSE(message.empty()) << "a 1000-byte budget was accepted for an estimate of " << estimate;
+    EXPECT_NE(message.find("bytes"), std::string::npos) << message;
+    EXPECT_NE(message.find(std::to_string(estimate)), std::string::npos) << message;
+    EXPECT_NE(message.find("level 1"), std::string::npos) << message;
+    EXPECT_EQ(refiner->maxLevel(), 0) << "refused before building anything";
+
+    // The budget is inclusive: exactly the estimate passes, one byte less fails.
+    Options exact;
+    exact.memoryBudgetBytes = estimate;
+    Refiner fits(m.descriptor(), exact);
+    EXPECT_NO_THROW(fits.refineUniform(1));
+    EXPECT_EQ(fits.maxLevel(), 1);
+    // The next level is larger than the budget that fitted level 1.
+    EXPECT_GT(fits.estimateLevelBytes(2), estimate);
+    message.clear();
+    try {
+        fits.refineUniform(2);
+    } catch (const TopologyError& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("level 2"), std::string::npos) << message;
+    Options oneLess;
+    oneLess.memoryBudgetBytes = estimate - 1;
+    Refiner tight(m.descriptor(), oneLess);
+    EXPECT_THROW(tight.refineUniform(1), TopologyError);
+}
+
+TEST(Validation, RefineToLevelZeroAndNegativeLevels) {
+    const LocalMesh m = cube();
+    Refiner refiner(m.descriptor(), Options());
+    EXPECT_NO_THROW(refiner.refineUniform(0));
+    EXPECT_EQ(refiner.maxLevel(), 0);
+    EXPECT_EQ(refiner.level(0).numVertices, 8);
+    EXPECT_EQ(refiner.level(0).numFaces(), 6);
+    EXPECT_EQ(refiner.level(0).numEdges(), 12);
+    EXPECT_THROW(refiner.refineUniform(-1), TopologyError);
+    EXPECT_EQ(refiner.maxLevel(), 0);
+    // Refining again after level 0 still works and is idempotent for lower requests.
+    refiner.refineUniform(1);
+    EXPECT_EQ(refiner.maxLevel(), 1);
+    refiner.refineUniform(0);
+    EXPECT_EQ(refiner.maxLevel(), 1);
+}
+
+}  // namespace

@@ -22,6 +22,15 @@ io::ObjMesh loadMesh(const MeshArgs& args) {
     return mesh;
 }
 
+// The analyzer over a file's mesh; topology errors name the file line of the face or tag at fault.
+Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options) {
+    try {
+        return Refiner(mesh.descriptor(), options);
+    } catch (const TopologyError& e) {
+        throw io::ObjError(mesh.locate(e) + e.what());
+    }
+}
+
 // Defaults, then the file's tags, then explicit flags.
 Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     Options options = mesh.applyTags(Options());
@@ -48,10 +57,6 @@ int countFlag(const std::vector<uint8_t>& flags, T flag) {
     return int(std::count_if(flags.begin(), flags.end(), [flag](uint8_t f) { return (f & flag) != 0; }));
 }
 
-template <typename T>
-int countPositive(const std::vector<T>& values, T threshold = T(0)) {
-    return int(std::count_if(values.begin(), values.end(), [threshold](T v) { return v > threshold; }));
-}
 
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -69,14 +74,20 @@ void printBase(const Topology& t, const Options& options) {
     for (auto [size, count] : sizes) std::printf(" %d-gon %d", size, count);
     std::printf("\n");
 
-    std::printf("edges: boundary %d, non-manifold %d, seam %d, sharp %d (infinite %d)\n",
+    // Boundary edges are infinitely sharp by rule; count the sharp edges the mesh asks for.
+    int sharp = 0, infinite = 0;
+    for (int e = 0; e < t.numEdges(); ++e) {
+        if (t.edgeFlags[e] & kEdgeBoundary) continue;
+        sharp += t.edgeSharpness[e] > 0;
+        infinite += t.edgeSharpness[e] >= kInfiniteSharpness;
+    }
+    std::printf("edges: boundary %d, non-manifold %d, seam %d, sharp non-boundary %d (infinite %d)\n",
                 countFlag(t.edgeFlags, kEdgeBoundary), countFlag(t.edgeFlags, kEdgeNonManifold),
-                countFlag(t.edgeFlags, kEdgeSeam), countPositive(t.edgeSharpness),
-                countPositive(t.edgeSharpness, kInfiniteSharpness - 1e-6f));
+                countFlag(t.edgeFlags, kEdgeSeam), sharp, infinite);
     std::printf("vertices: boundary %d, non-manifold %d, seam %d, corner %d, sharp %d\n",
                 countFlag(t.vertFlags, kVertexBoundary), countFlag(t.vertFlags, kVertexNonManifold),
                 countFlag(t.vertFlags, kVertexSeam), countFlag(t.vertFlags, kVertexCorner),
-                countPositive(t.vertSharpness));
+                int(std::count_if(t.vertSharpness.begin(), t.vertSharpness.end(), [](float s) { return s > 0; })));
 
     // Vertex types by incident (quad-like, triangle) faces.
     std::map<std::pair<int, int>, int> types;
@@ -93,7 +104,7 @@ void printBase(const Topology& t, const Options& options) {
 
 int runRefine(const RefineArgs& args) {
     io::ObjMesh mesh = loadMesh(args.mesh);
-    Refiner refiner(mesh.descriptor(), makeOptions(args.mesh, mesh));
+    Refiner refiner = makeRefiner(mesh, makeOptions(args.mesh, mesh));
     refiner.refineUniform(args.level);
     StencilTable table;
     if (args.level > 0) table = refiner.factorizedStencils(args.level);
@@ -108,7 +119,7 @@ int runRefine(const RefineArgs& args) {
 int runInfo(const InfoArgs& args) {
     io::ObjMesh mesh = loadMesh(args.mesh);
     Options options = makeOptions(args.mesh, mesh);
-    Refiner refiner(mesh.descriptor(), options);
+    Refiner refiner = makeRefiner(mesh, options);
     std::printf("%s\n", args.mesh.input.c_str());
     printBase(refiner.level(0), options);
 
@@ -138,16 +149,17 @@ int runDemo(const DemoArgs& args) {
     std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int L = 1; L <= args.levels; ++L) {
         auto start = std::chrono::steady_clock::now();
-        Refiner refiner(mesh.descriptor(), options);
+        Refiner refiner = makeRefiner(mesh, options);
         refiner.refineUniform(L);
         StencilTable table = refiner.factorizedStencils(L);
         double analyzerMs = msSince(start);
 
         std::vector<double> evalMs;
-        std::vector<float> positions;
+        std::vector<float> positions(size_t(table.numStencils()) * 3);
         for (int run = 0; run < 7; ++run) {
             start = std::chrono::steady_clock::now();
-            positions = evaluate(&table, mesh);
+            CpuEvaluator::EvalStencils(mesh.positions.data(), BufferDescriptor(0, 3, 3), positions.data(),
+                                       BufferDescriptor(0, 3, 3), table);
             evalMs.push_back(msSince(start));
         }
         std::nth_element(evalMs.begin(), evalMs.begin() + 3, evalMs.end());

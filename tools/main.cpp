@@ -14,6 +14,18 @@ namespace {
 
 using namespace quadtri;
 
+// A validator accepting the names in `names` (reported as "unknown <what> 'x' (expected a, b)").
+template <typename T>
+CLI::Validator oneOf(const std::map<std::string, T>& names, const std::string& what) {
+    std::string list;
+    for (const auto& entry : names) list += (list.empty() ? "" : ", ") + entry.first;
+    return CLI::Validator(
+        [names, what, list](std::string& s) {
+            return names.count(s) ? std::string() : "unknown " + what + " '" + s + "' (expected " + list + ")";
+        },
+        "{" + list + "}");
+}
+
 void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
     static const std::map<std::string, Scheme> schemes{{"stam-loop", Scheme::StamLoop},
                                                        {"bilinear", Scheme::Bilinear}};
@@ -22,17 +34,18 @@ void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
         {"edge-and-corner", BoundaryInterpolation::EdgeAndCorner},
         {"none", BoundaryInterpolation::None}};
     cmd.add_option("input", args.input, "Input OBJ file")->required();
-    cmd.add_option_function<Scheme>(
-           "--scheme", [&args](const Scheme& s) { args.scheme = s; }, "Subdivision scheme (default stam-loop)")
-        ->transform(CLI::CheckedTransformer(schemes));
-    cmd.add_option_function<BoundaryInterpolation>(
-           "--boundary", [&args](const BoundaryInterpolation& b) { args.boundary = b; },
+    cmd.add_option_function<std::string>(
+           "--scheme", [&args](const std::string& s) { args.scheme = schemes.at(s); },
+           "Subdivision scheme (default stam-loop)")
+        ->check(oneOf(schemes, "scheme"));
+    cmd.add_option_function<std::string>(
+           "--boundary", [&args](const std::string& s) { args.boundary = boundaries.at(s); },
            "Boundary interpolation; overrides the file's interpolateboundary tag (default edge-only)")
-        ->transform(CLI::CheckedTransformer(boundaries));
+        ->check(oneOf(boundaries, "boundary"));
 }
 
-CLI::Option* addLevel(CLI::App& cmd, const char* name, int& level, const char* help) {
-    return cmd.add_option(name, level, help)->check(CLI::Range(0, cli::kMaxLevel))->capture_default_str();
+CLI::Option* addLevel(CLI::App& cmd, const char* name, int& level, const char* help, int minLevel = 0) {
+    return cmd.add_option(name, level, help)->check(CLI::Range(minLevel, cli::kMaxLevel))->capture_default_str();
 }
 
 }  // namespace
@@ -55,14 +68,14 @@ int main(int argc, char** argv) {
     cli::DemoArgs demo;
     CLI::App* demoCmd = app.add_subcommand("demo", "Time the analyzer and evaluator per level and write each level");
     addMeshFlags(*demoCmd, demo.mesh);
-    addLevel(*demoCmd, "--levels", demo.levels, "Levels 1..N are timed and written");
+    addLevel(*demoCmd, "--levels", demo.levels, "Levels 1..N are timed and written", 1);
     demoCmd->add_option("--out-dir", demo.outDir, "Folder for <stem>_level<L>.obj")->capture_default_str();
 
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help
-        std::cerr << "quadtri: " << e.what() << "\n";
+        std::cerr << "quadtri: " << e.what() << "\nRun 'quadtri --help' for usage.\n";
         return 2;
     }
 

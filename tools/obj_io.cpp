@@ -7,7 +7,6 @@
 #include <fstream>
 #include <istream>
 #include <ostream>
-#include <sstream>
 #include <string_view>
 
 namespace quadtri::io {
@@ -17,7 +16,7 @@ namespace {
 // Parses one OBJ stream; `fail` and `warn` prefix messages with "name:line: ".
 class Parser {
 public:
-    Parser(std::istream& in, const std::string& name) : in_(in), name_(name) {}
+    Parser(std::istream& in, const std::string& name) : in_(in), name_(name) { mesh_.name = name; }
 
     ObjMesh run() {
         std::string line;
@@ -25,7 +24,7 @@ public:
             ++line_;
             parseLine(line);
         }
-        if (in_.bad()) fail("read error");
+        if (in_.bad()) throw ObjError(line_ == 0 ? name_ + ": cannot read file" : where(line_ + 1) + "read error");
         checkFaceIndices();
         return std::move(mesh_);
     }
@@ -35,7 +34,6 @@ private:
     const std::string& name_;
     int line_ = 0;
     ObjMesh mesh_;
-    std::vector<int> faceLines_;  // line of each face, for errors found after the whole file
 
     std::string where(int line) const { return name_ + ":" + std::to_string(line) + ": "; }
     [[noreturn]] void fail(const std::string& problem) const { throw ObjError(where(line_) + problem); }
@@ -54,7 +52,7 @@ private:
     }
 
     static std::string_view skipPlus(std::string_view s) {
-        return s.size() > 1 && s[0] == '+' ? s.substr(1) : s;
+        return s.size() > 1 && s[0] == '+' && s[1] != '-' && s[1] != '+' ? s.substr(1) : s;
     }
 
     int toInt(std::string_view s, const char* what) const {
@@ -120,7 +118,7 @@ private:
             mesh_.faceVerts.push_back(index);
         }
         mesh_.faceSizes.push_back(corners);
-        faceLines_.push_back(line_);
+        mesh_.faceLines.push_back(line_);
     }
 
     void checkFaceIndices() const {
@@ -129,7 +127,7 @@ private:
         for (int f = 0; f < mesh_.numFaces(); ++f)
             for (int c = 0; c < mesh_.faceSizes[f]; ++c, ++k)
                 if (mesh_.faceVerts[k] >= n)
-                    throw ObjError(where(faceLines_[f]) + "face " + std::to_string(f) + " index " +
+                    throw ObjError(where(mesh_.faceLines[f]) + "face index " +
                                    std::to_string(mesh_.faceVerts[k] + 1) + " is out of range (" +
                                    std::to_string(n) + " vertices)");
     }
@@ -179,6 +177,7 @@ private:
                 mesh_.creasePairs.push_back(ints[2 * p]);
                 mesh_.creasePairs.push_back(ints[2 * p + 1]);
                 mesh_.creaseSharpness.push_back(floats[nFloat == 1 ? 0 : p]);
+                mesh_.creaseLines.push_back(line_);
             }
         } else if (name == "corner") {
             expect(nInt >= 1 && (nFloat == 1 || nFloat == nInt) && nString == 0, "N/1/0 or N/N/0");
@@ -186,11 +185,13 @@ private:
             for (int i = 0; i < nInt; ++i) {
                 mesh_.corners.push_back(ints[i]);
                 mesh_.cornerSharpness.push_back(floats[nFloat == 1 ? 0 : i]);
+                mesh_.cornerLines.push_back(line_);
             }
         } else if (name == "hole") {
             expect(nFloat == 0 && nString == 0, "N/0/0");
             nonNegative("face index");
             mesh_.holes.insert(mesh_.holes.end(), ints.begin(), ints.end());
+            mesh_.holeLines.insert(mesh_.holeLines.end(), ints.size(), line_);
         } else if (name == "interpolateboundary") {
             expect(nInt == 1 && nFloat == 0 && nString == 0, "1/0/0");
             switch (ints[0]) {
@@ -236,6 +237,18 @@ Options ObjMesh::applyTags(Options base) const {
     if (boundary) base.boundary = *boundary;
     if (creaseMethod) base.creaseMethod = *creaseMethod;
     return base;
+}
+
+std::string ObjMesh::locate(const TopologyError& error) const {
+    using Component = TopologyError::Component;
+    const std::vector<int>* lines = error.component() == Component::Face     ? &faceLines
+                                    : error.component() == Component::Crease ? &creaseLines
+                                    : error.component() == Component::Corner ? &cornerLines
+                                    : error.component() == Component::Hole   ? &holeLines
+                                                                             : nullptr;
+    const int i = error.index();
+    if (lines && i >= 0 && size_t(i) < lines->size()) return name + ":" + std::to_string((*lines)[i]) + ": ";
+    return name + ": ";
 }
 
 ObjMesh parseObj(std::istream& in, const std::string& name) { return Parser(in, name).run(); }

@@ -32,12 +32,18 @@ struct ObjMesh {
     std::optional<CreaseMethod> creaseMethod;       // from `t creasemethod`
     std::vector<std::string> warnings;              // "file:line: ..." for ignored content
 
+    // Where each item came from, so that topology errors can name the line.
+    std::string name;
+    std::vector<int> faceLines, creaseLines, cornerLines, holeLines;
+
     int numVertices() const { return int(positions.size() / 3); }
     int numFaces() const { return int(faceSizes.size()); }
     // A view of the arrays above; valid while this mesh lives.
     TopologyDescriptor descriptor() const;
     // `base` with the boundary and crease method replaced where the file has tags for them.
     Options applyTags(Options base) const;
+    // "file:line: " of the face, crease, corner or hole a TopologyError names, else "file: ".
+    std::string locate(const TopologyError& error) const;
 };
 
 ObjMesh parseObj(std::istream& in, const std::string& name);
