@@ -146,11 +146,18 @@ StencilTableD buildLevelStencils(const Topology& t, const ChildNumbering& num, c
         childEdgeSharpnessAtVertex(t, v, options.creaseMethod, &childEdgeSharpness[t.vertEdgeOffsets[v]]);
 
     for (int e = 0; e < t.numEdges(); ++e) {
+        // The edge point is a crease point when both child halves stay sharp. Uniform decay keeps
+        // them sharp exactly when s > 1 (s = 1 blends with weight 1, the same point); Chaikin can
+        // smooth the children of an edge with s > 1 next to weaker creases, and the blend then
+        // uses s unclamped, as OpenSubdiv does.
         const float s = t.edgeSharpness[e];
-        bool sharp = linear || s >= 1.0f || t.edgeFaceCount(e) != 2;
-        if (!sharp && isSharp(s) && options.creaseMethod == CreaseMethod::Chaikin)
-            sharp = childSharpnessAt(t, childEdgeSharpness, t.edgeVerts[2 * e], e) > 0.0f &&
-                    childSharpnessAt(t, childEdgeSharpness, t.edgeVerts[2 * e + 1], e) > 0.0f;
+        bool sharp = linear || isInfinite(s) || t.edgeFaceCount(e) != 2;
+        if (!sharp && isSharp(s)) {
+            sharp = options.creaseMethod == CreaseMethod::Uniform
+                        ? s >= 1.0f
+                        : childSharpnessAt(t, childEdgeSharpness, t.edgeVerts[2 * e], e) > 0.0f &&
+                              childSharpnessAt(t, childEdgeSharpness, t.edgeVerts[2 * e + 1], e) > 0.0f;
+        }
         if (sharp) {
             level.edgeSharp(e, 1.0);
         } else if (!isSharp(s)) {

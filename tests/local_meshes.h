@@ -68,9 +68,11 @@ inline RingMesh buildRingMesh(const std::string& ring) {
     RingMesh r;
     r.ring = ring;
     const int n = int(ring.size());
-    if (n < 2) throw std::invalid_argument("ring needs at least two faces");
+    if (n < 2)
+        throw std::invalid_argument("ring needs at least two faces");
     int next = 1 + n;
-    for (int i = 0; i < n; ++i) r.p.push_back(1 + i);
+    for (int i = 0; i < n; ++i)
+        r.p.push_back(1 + i);
     r.q.assign(n, -1);
     for (int i = 0; i < n; ++i)
         if (ring[i] == 'Q') {
@@ -93,7 +95,8 @@ inline RingMesh buildRingMesh(const std::string& ring) {
         }
     }
     // Cone: the boundary edge a->b of the disk is traversed b->a by its cone triangle.
-    for (auto [a, b] : boundary) r.mesh.addFace({b, a, r.apex});
+    for (auto [a, b] : boundary)
+        r.mesh.addFace({b, a, r.apex});
     return r;
 }
 
@@ -103,8 +106,10 @@ inline LocalMesh buildPrism(int n) {
     LocalMesh m;
     m.numVertices = 2 * n;
     std::vector<int> bottom, top;
-    for (int i = 0; i < n; ++i) bottom.push_back(n - 1 - i);  // facing down
-    for (int i = 0; i < n; ++i) top.push_back(n + i);
+    for (int i = 0; i < n; ++i)
+        bottom.push_back(n - 1 - i);  // facing down
+    for (int i = 0; i < n; ++i)
+        top.push_back(n + i);
     m.addFace(bottom);
     m.addFace(top);
     for (int i = 0; i < n; ++i) {
@@ -143,7 +148,8 @@ inline LocalMesh quadrangulate(const LocalMesh& m) {
     auto edgeVertex = [&](int a, int b) {
         const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
         for (auto& [k, id] : edgeIds)
-            if (k == key) return id;
+            if (k == key)
+                return id;
         edgeIds.push_back({key, next});
         return next++;
     };
@@ -182,7 +188,8 @@ inline LocalMesh fromTopology(const Topology& t) {
 inline int edgeBetween(const Topology& t, int a, int b) {
     for (int e = 0; e < t.numEdges(); ++e) {
         const int u = t.edgeVerts[2 * e], v = t.edgeVerts[2 * e + 1];
-        if ((u == a && v == b) || (u == b && v == a)) return e;
+        if ((u == a && v == b) || (u == b && v == a))
+            return e;
     }
     return -1;
 }
@@ -190,20 +197,27 @@ inline int edgeBetween(const Topology& t, int a, int b) {
 inline int countNonTriangleFaces(const Topology& t) {
     int count = 0;
     for (int f = 0; f < t.numFaces(); ++f)
-        if (t.faceSize(f) != 3) ++count;
+        if (t.faceSize(f) != 3)
+            ++count;
     return count;
 }
 
 // Index in level L+1 of the point of face f (not a triangle) of level L.
 inline int childOfFace(const Topology& t, int f) {
-    if (t.faceSize(f) == 3) throw std::invalid_argument("triangles have no face point");
+    if (t.faceSize(f) == 3)
+        throw std::invalid_argument("triangles have no face point");
     int rank = 0;
     for (int g = 0; g < f; ++g)
-        if (t.faceSize(g) != 3) ++rank;
+        if (t.faceSize(g) != 3)
+            ++rank;
     return rank;
 }
-inline int childOfEdge(const Topology& t, int e) { return countNonTriangleFaces(t) + e; }
-inline int childOfVertex(const Topology& t, int v) { return countNonTriangleFaces(t) + t.numEdges() + v; }
+inline int childOfEdge(const Topology& t, int e) {
+    return countNonTriangleFaces(t) + e;
+}
+inline int childOfVertex(const Topology& t, int v) {
+    return countNonTriangleFaces(t) + t.numEdges() + v;
+}
 
 // Stencil i of `table` as dense weights over its source vertices (repeated indices summed).
 inline std::vector<double> denseStencil(const StencilTable& table, int i) {
@@ -217,8 +231,10 @@ inline std::vector<double> denseStencil(const StencilTable& table, int i) {
 
 inline double maxAbsDifference(const std::vector<double>& a, const std::vector<double>& b) {
     double d = 0;
-    for (size_t i = 0; i < a.size() && i < b.size(); ++i) d = std::max(d, std::fabs(a[i] - b[i]));
-    if (a.size() != b.size()) d = INFINITY;
+    for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+        d = std::max(d, std::fabs(a[i] - b[i]));
+    if (a.size() != b.size())
+        d = INFINITY;
     return d;
 }
 

@@ -33,8 +33,8 @@ const double kPi = std::acos(-1.0);
 struct LocalMatrix {
     std::string ring;
     int nE = 0, nQ = 0;
-    Eigen::MatrixXd S;  // rows: level-1 local vertices; columns: level-0 local vertices
-    double outside = 0; // largest |weight| a local row puts on a vertex outside the set
+    Eigen::MatrixXd S;   // rows: level-1 local vertices; columns: level-0 local vertices
+    double outside = 0;  // largest |weight| a local row puts on a vertex outside the set
 };
 
 // The local vertex set of one level: centre, edge neighbours (ring order), opposite quad corners.
@@ -47,13 +47,15 @@ struct LocalSet {
 int faceAt(const Topology& t, int c, int a, int b, bool quad) {
     for (int i = t.vertFaceOffsets[c]; i < t.vertFaceOffsets[c + 1]; ++i) {
         const int f = t.vertFaces[i];
-        if ((t.faceSize(f) == 4) != quad) continue;
+        if ((t.faceSize(f) == 4) != quad)
+            continue;
         bool hasA = false, hasB = false;
         for (int k = t.faceOffsets[f]; k < t.faceOffsets[f + 1]; ++k) {
             hasA = hasA || t.faceVerts[k] == a;
             hasB = hasB || t.faceVerts[k] == b;
         }
-        if (hasA && hasB) return f;
+        if (hasA && hasB)
+            return f;
     }
     return -1;
 }
@@ -75,7 +77,8 @@ LocalMatrix buildLocalMatrix(const std::string& ring, const Options& options = O
     LocalSet set;
     set.center = r.center;
     set.p = r.p;
-    for (int k = 0; k < m.nQ; ++k) set.q.push_back(r.q[r.quadOf[k]]);
+    for (int k = 0; k < m.nQ; ++k)
+        set.q.push_back(r.q[r.quadOf[k]]);
     std::vector<int> rows;
     for (int L = 0; L < level; ++L) {
         const Topology& t = refiner.level(L);
@@ -83,12 +86,14 @@ LocalMatrix buildLocalMatrix(const std::string& ring, const Options& options = O
         next.center = childOfVertex(t, set.center);
         for (int i = 0; i < m.nE; ++i) {
             const int e = edgeBetween(t, set.center, set.p[i]);
-            if (e < 0) throw std::runtime_error("level " + std::to_string(L) + ": edge c-p" + std::to_string(i) + " missing");
+            if (e < 0)
+                throw std::runtime_error("level " + std::to_string(L) + ": edge c-p" + std::to_string(i) + " missing");
             next.p.push_back(childOfEdge(t, e));
         }
         for (int k = 0; k < m.nQ; ++k) {
             const int f = faceAt(t, set.center, set.p[r.quadOf[k]], set.q[k], true);
-            if (f < 0) throw std::runtime_error("level " + std::to_string(L) + ": quad " + std::to_string(k) + " missing");
+            if (f < 0)
+                throw std::runtime_error("level " + std::to_string(L) + ": quad " + std::to_string(k) + " missing");
             next.q.push_back(childOfFace(t, f));
         }
         if (L + 1 == level) {
@@ -102,8 +107,10 @@ LocalMatrix buildLocalMatrix(const std::string& ring, const Options& options = O
     const StencilTable& table = refiner.levelStencils(level);
     std::vector<int> local(size_t(table.numSourceVertices), -1);
     local[set.center] = 0;
-    for (int i = 0; i < m.nE; ++i) local[set.p[i]] = 1 + i;
-    for (int k = 0; k < m.nQ; ++k) local[set.q[k]] = 1 + m.nE + k;
+    for (int i = 0; i < m.nE; ++i)
+        local[set.p[i]] = 1 + i;
+    for (int k = 0; k < m.nQ; ++k)
+        local[set.q[k]] = 1 + m.nE + k;
 
     m.S = Eigen::MatrixXd::Zero(N, N);
     for (int row = 0; row < N; ++row) {
@@ -152,8 +159,10 @@ Eigen::VectorXd averagedCentre(const std::string& ring) {
     }
     int k = 0;
     for (int i = 0; i < nE; ++i) {
-        if (ring[i] != 'Q') continue;
-        for (int idx : {0, 1 + i, 1 + (i + 1) % nE, 1 + nE + k}) v[idx] += gamma / 4;
+        if (ring[i] != 'Q')
+            continue;
+        for (int idx : {0, 1 + i, 1 + (i + 1) % nE, 1 + nE + k})
+            v[idx] += gamma / 4;
         ++k;
     }
     return v;
@@ -162,11 +171,14 @@ Eigen::VectorXd averagedCentre(const std::string& ring) {
 // The local configuration maps onto itself: the matrix of level 2 over the level-1 local set
 // (built from the level-2 masks) is the level-1 matrix, so its eigenvalues govern every level.
 TEST(EigenLocalMatrix, StationaryAcrossLevels) {
-    for (const std::string ring : {"QQQ", "QQQQQ", "TTTT", "TTTTTTT", "QT", "QTT", "QQT", "QTTT", "QQTT", "QQQT", "QQTTT"}) {
+    for (const std::string ring :
+         {"QQQ", "QQQQQ", "TTTT", "TTTTTTT", "QT", "QTT", "QQT", "QTTT", "QQTT", "QQQT", "QQTTT"}) {
         const LocalMatrix m1 = buildLocalMatrix(ring, Options(), 1);
         const LocalMatrix m2 = buildLocalMatrix(ring, Options(), 2);
         EXPECT_LE(m2.outside, 1e-7) << ring;
-        EXPECT_LE((m1.S - m2.S).cwiseAbs().maxCoeff(), 1e-6) << ring << "\nlevel 1:\n" << m1.S << "\nlevel 2:\n" << m2.S;
+        EXPECT_LE((m1.S - m2.S).cwiseAbs().maxCoeff(), 1e-6) << ring << "\nlevel 1:\n"
+                                                             << m1.S << "\nlevel 2:\n"
+                                                             << m2.S;
     }
 }
 
@@ -178,7 +190,9 @@ double catmullClarkSubdominant(int n) {
 }
 
 // Sanity of the closed form itself: n = 4 is the regular bicubic case, lambda = 1/2.
-TEST(EigenCatmullClark, ClosedFormRegular) { EXPECT_NEAR(catmullClarkSubdominant(4), 0.5, 1e-15); }
+TEST(EigenCatmullClark, ClosedFormRegular) {
+    EXPECT_NEAR(catmullClarkSubdominant(4), 0.5, 1e-15);
+}
 
 TEST(EigenCatmullClark, SubdominantEigenvalue) {
     for (int n = 3; n <= 8; ++n) {
@@ -215,7 +229,8 @@ TEST(EigenLoop, SubdominantEigenvalue) {
         const double c = 3.0 / 8 + 0.25 * std::cos(2 * kPi / n);
         const double nBeta = 5.0 / 8 - c * c;
         bool found = false;
-        for (auto x : ev) found = found || std::abs(x - (5.0 / 8 - nBeta)) < 1e-6;
+        for (auto x : ev)
+            found = found || std::abs(x - (5.0 / 8 - nBeta)) < 1e-6;
         EXPECT_TRUE(found) << "no eigenvalue 5/8 - n beta = " << 5.0 / 8 - nBeta;
     }
 }
@@ -227,7 +242,8 @@ TEST(EigenSeam, OrdinarySeamSpectrum) {
     const auto ev = spectrum(m.S);
     SCOPED_TRACE("spectrum" + show(ev));
     const double expected[] = {1, 0.5, 0.5, 0.25, 0.25, 0.25};
-    for (int i = 0; i < 6; ++i) EXPECT_NEAR(std::abs(ev[i]), expected[i], 1e-5) << "eigenvalue " << i;
+    for (int i = 0; i < 6; ++i)
+        EXPECT_NEAR(std::abs(ev[i]), expected[i], 1e-5) << "eigenvalue " << i;
     EXPECT_LT(std::abs(ev[6]), 0.25 - 1e-3);
 }
 
@@ -236,13 +252,13 @@ TEST(EigenSeam, OrdinarySeamSpectrum) {
 struct EtaCase {
     const char* ring;  // quads first, then triangles (the (4,2) table value is for adjacent quads)
     int nE, nQ;
-    double eta;        // DESIGN.md 2.1
+    double eta;  // DESIGN.md 2.1
     bool zeroCriterion;
 };
 
 const EtaCase kEtaTable[] = {
-    {"QT", 2, 1, -0.20505, false},   {"QTT", 3, 1, 54.0 / 67, true}, {"QQT", 3, 2, 8.0 / 13, true},
-    {"QTTT", 4, 1, 0.34792, false},  {"QQTT", 4, 2, 0.21380, false}, {"QQQT", 4, 3, 0.10550, false},
+    {"QT", 2, 1, -0.20505, false},  {"QTT", 3, 1, 54.0 / 67, true}, {"QQT", 3, 2, 8.0 / 13, true},
+    {"QTTT", 4, 1, 0.34792, false}, {"QQTT", 4, 2, 0.21380, false}, {"QQQT", 4, 3, 0.10550, false},
 };
 
 // Reads eta back from the analyzer's centre row r = (1 + eta) v1 - eta e_c, with v1 the
@@ -295,7 +311,8 @@ double solveCurvatureEta(const std::function<Eigen::MatrixXd(double)>& S) {
                 }
             }
             const double root = 0.5 * (lo + hi);
-            if (std::fabs(f(root)) < 1e-8 && (std::isnan(best) || std::fabs(root) < std::fabs(best))) best = root;
+            if (std::fabs(f(root)) < 1e-8 && (std::isnan(best) || std::fabs(root) < std::fabs(best)))
+                best = root;
         }
         x0 = x1;
         f0 = f1;
@@ -315,11 +332,13 @@ TEST(EigenEta, AnalyzerMasksHaveTheTableEta) {
         Eigen::VectorXd expected = (1.0 + eta) * averagedCentre(c.ring);
         expected[0] -= eta;
         EXPECT_LE((m.S.row(0).transpose() - expected).cwiseAbs().maxCoeff(), 1e-6)
-            << "centre row " << m.S.row(0) << "\n not of the form (1+eta) v1 - eta c; v1 = " << averagedCentre(c.ring).transpose();
+            << "centre row " << m.S.row(0)
+            << "\n not of the form (1+eta) v1 - eta c; v1 = " << averagedCentre(c.ring).transpose();
         // The analyzer uses the exact fractions and the 5-digit values (floats: ~1e-7).
         EXPECT_NEAR(eta, c.eta, c.zeroCriterion ? 1e-6 : 1e-5);
         // Every other row: partition of unity (the family below keeps the centre row's sum at 1).
-        for (int r = 0; r < m.S.rows(); ++r) EXPECT_NEAR(m.S.row(r).sum(), 1.0, 1e-6) << "row " << r;
+        for (int r = 0; r < m.S.rows(); ++r)
+            EXPECT_NEAR(m.S.row(r).sum(), 1.0, 1e-6) << "row " << r;
     }
 }
 

@@ -21,9 +21,11 @@ using namespace quadtri::test;
 constexpr int kLevels = 3;
 
 const char* const kMeshes[] = {
-    "mixed/book_nonmanifold.obj", "mixed/checker_cube.obj", "mixed/cylinder_capped.obj",
-    "mixed/cylinder_capped_creased.obj", "mixed/mixed_torus.obj", "mixed/split_plane.obj",
-    "osd/catmark_rook.obj", "osd/catmark_pole8.obj", "osd/catmark_pyramid.obj",
+    "mixed/book_nonmanifold.obj", "mixed/checker_cube.obj",
+    "mixed/cylinder_capped.obj",  "mixed/cylinder_capped_creased.obj",
+    "mixed/mixed_torus.obj",      "mixed/split_plane.obj",
+    "osd/catmark_rook.obj",       "osd/catmark_pole8.obj",
+    "osd/catmark_pyramid.obj",
 };
 
 class MixedMesh : public ::testing::TestWithParam<const char*> {};
@@ -46,7 +48,8 @@ std::vector<double> apply(const StencilTable& table, const std::vector<float>& c
     for (int i = 0; i < table.numStencils(); ++i)
         for (int k = 0; k < table.sizes[i]; ++k) {
             const int j = table.offsets[i] + k;
-            for (int c = 0; c < 3; ++c) out[3 * i + c] += double(table.weights[j]) * control[3 * table.indices[j] + c];
+            for (int c = 0; c < 3; ++c)
+                out[3 * i + c] += double(table.weights[j]) * control[3 * table.indices[j] + c];
         }
     return out;
 }
@@ -63,8 +66,10 @@ double checkTable(const StencilTable& table, int numSource, int numStencils, con
         double sum = 0;
         for (int k = 0; k < table.sizes[i]; ++k) {
             const int j = table.offsets[i] + k;
-            if (table.indices[j] < 0 || table.indices[j] >= numSource) ++badIndex;
-            if (!std::isfinite(table.weights[j])) ++badWeight;
+            if (table.indices[j] < 0 || table.indices[j] >= numSource)
+                ++badIndex;
+            if (!std::isfinite(table.weights[j]))
+                ++badWeight;
             sum += table.weights[j];
         }
         worst = std::max(worst, std::fabs(sum - 1.0));
@@ -82,7 +87,8 @@ TEST_P(MixedMesh, CountsPerLevel) {
     for (int L = 1; L <= kLevels; ++L) {
         const Topology& p = r.refiner->level(L - 1);
         const Topology& c = r.refiner->level(L);
-        for (int f = 0; f < p.numFaces(); ++f) ASSERT_FALSE(p.faceHole[f]) << "level " << L - 1 << " face " << f;
+        for (int f = 0; f < p.numFaces(); ++f)
+            ASSERT_FALSE(p.faceHole[f]) << "level " << L - 1 << " face " << f;
         long long nonTriangles = 0, childFaces = 0, interiorEdges = 0, childTriangles = 0, childQuads = 0;
         for (int f = 0; f < p.numFaces(); ++f) {
             const int n = p.faceSize(f);
@@ -102,10 +108,12 @@ TEST_P(MixedMesh, CountsPerLevel) {
         EXPECT_EQ(c.numFaces(), childFaces) << where;
         EXPECT_EQ(c.numEdges(), 2LL * p.numEdges() + interiorEdges) << where;
         long long triangles = 0, quads = 0;
-        for (int f = 0; f < c.numFaces(); ++f) (c.faceSize(f) == 3 ? triangles : quads) += 1;
+        for (int f = 0; f < c.numFaces(); ++f)
+            (c.faceSize(f) == 3 ? triangles : quads) += 1;
         EXPECT_EQ(triangles, childTriangles) << where << ": triangles split into triangles";
         EXPECT_EQ(quads, childQuads) << where << ": other faces split into quads";
-        for (int f = 0; f < c.numFaces(); ++f) ASSERT_LE(c.faceSize(f), 4) << where << " face " << f;
+        for (int f = 0; f < c.numFaces(); ++f)
+            ASSERT_LE(c.faceSize(f), 4) << where << " face " << f;
         EXPECT_EQ(int(r.positions[L].size()), 3 * c.numVertices) << where;
     }
     // Level 0 itself: edges counted by the test from the OBJ's faces.
@@ -134,7 +142,8 @@ TEST_P(MixedMesh, PartitionOfUnityAndFiniteness) {
                    where);
         checkTable(r.refiner->factorizedStencils(L), V0, r.refiner->level(L).numVertices, where + " factorized");
         int nonFinite = 0;
-        for (float x : r.positions[L]) nonFinite += std::isfinite(x) ? 0 : 1;
+        for (float x : r.positions[L])
+            nonFinite += std::isfinite(x) ? 0 : 1;
         EXPECT_EQ(nonFinite, 0) << where << ": NaN or infinite positions";
     }
 }
@@ -173,7 +182,8 @@ TEST_P(MixedMesh, RefinementMovesVertices) {
     const RefinedMesh r = refineMesh(GetParam(), 1);
     const Topology& t = r.refiner->level(0);
     int facePoints = 0;
-    for (int f = 0; f < t.numFaces(); ++f) facePoints += t.faceSize(f) == 3 ? 0 : 1;
+    for (int f = 0; f < t.numFaces(); ++f)
+        facePoints += t.faceSize(f) == 3 ? 0 : 1;
     double moved = 0;
     for (int v = 0; v < t.numVertices; ++v) {
         const int child = facePoints + t.numEdges() + v;
@@ -194,7 +204,8 @@ TEST_P(MixedMesh, BilinearCountsUnityAndCorners) {
         const Topology& p = r.refiner->level(L - 1);
         const Topology& c = r.refiner->level(L);
         long long nonTriangles = 0;
-        for (int f = 0; f < p.numFaces(); ++f) nonTriangles += p.faceSize(f) == 3 ? 0 : 1;
+        for (int f = 0; f < p.numFaces(); ++f)
+            nonTriangles += p.faceSize(f) == 3 ? 0 : 1;
         const std::string where = std::string(GetParam()) + " bilinear level " + std::to_string(L);
         EXPECT_EQ(c.numVertices, p.numVertices + p.numEdges() + nonTriangles) << where;
         checkTable(r.refiner->levelStencils(L), p.numVertices, c.numVertices, where);
@@ -211,7 +222,8 @@ TEST_P(MixedMesh, BilinearCountsUnityAndCorners) {
 INSTANTIATE_TEST_SUITE_P(Meshes, MixedMesh, ::testing::ValuesIn(kMeshes), [](const auto& info) {
     std::string name = info.param;
     for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+        if (!std::isalnum(static_cast<unsigned char>(ch)))
+            ch = '_';
     return name;
 });
 

@@ -100,7 +100,8 @@ std::vector<ShapeCase> osdCases() {
         } else {
             continue;
         }
-        const int maxLevel = c.numFaces < 100 ? 4 : 3;
+        // Levels 1-4, and 1-3 for shapes over 500 faces (their level 4 is large and adds nothing).
+        const int maxLevel = c.numFaces > 500 ? 3 : 4;
         for (int level = 1; level <= maxLevel; ++level) {
             c.level = level;
             cases.push_back(c);

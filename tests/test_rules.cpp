@@ -34,7 +34,9 @@ double loopBeta(int n) {
 }
 
 using Key = std::pair<int, int>;
-Key edgeKey(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+Key edgeKey(int a, int b) {
+    return {std::min(a, b), std::max(a, b)};
+}
 
 // Adjacency computed by the test from the face lists.
 struct Adjacency {
@@ -66,7 +68,8 @@ struct Adjacency {
     int boundaryEdgeCount(int v) const {
         int k = 0;
         for (int w : neighbours[v])
-            if (edgeFaces.at(edgeKey(v, w)).size() == 1) ++k;
+            if (edgeFaces.at(edgeKey(v, w)).size() == 1)
+                ++k;
         return k;
     }
 };
@@ -76,21 +79,24 @@ struct Dense {
     explicit Dense(int n) : w(size_t(n), 0.0) {}
     void add(int v, double x) { w.at(size_t(v)) += x; }
     void addCentroid(const std::vector<int>& face, double x) {
-        for (int v : face) add(v, x / double(face.size()));
+        for (int v : face)
+            add(v, x / double(face.size()));
     }
 };
 
 // The vertex of triangle f that is not on edge (a, b).
 int oppositeVertex(const std::vector<int>& tri, int a, int b) {
     for (int v : tri)
-        if (v != a && v != b) return v;
+        if (v != a && v != b)
+            return v;
     return -1;
 }
 
 std::string describe(const std::vector<double>& w) {
     std::ostringstream s;
     for (size_t i = 0; i < w.size(); ++i)
-        if (std::fabs(w[i]) > 1e-9) s << " [" << i << "]=" << w[i];
+        if (std::fabs(w[i]) > 1e-9)
+            s << " [" << i << "]=" << w[i];
     return s.str();
 }
 
@@ -140,29 +146,35 @@ std::optional<std::vector<double>> expectedVertexPoint(const Adjacency& adj, con
     }
     const int k = adj.boundaryEdgeCount(v);
     if (k > 0) {
-        if (k != 2) return std::nullopt;
+        if (k != 2)
+            return std::nullopt;
         if (adj.vertexFaces[v].size() == 1 && o.boundary == BoundaryInterpolation::EdgeAndCorner) {
             d.add(v, 1.0);  // corner: fixed
             return d.w;
         }
         d.add(v, 0.75);  // crease rule over the two boundary neighbours
         for (int w : adj.neighbours[v])
-            if (adj.edgeFaces.at(edgeKey(v, w)).size() == 1) d.add(w, 0.125);
+            if (adj.edgeFaces.at(edgeKey(v, w)).size() == 1)
+                d.add(w, 0.125);
         return d.w;
     }
     int tris = 0, others = 0;
-    for (int f : adj.vertexFaces[v]) (adj.isTriangle(f) ? tris : others)++;
+    for (int f : adj.vertexFaces[v])
+        (adj.isTriangle(f) ? tris : others)++;
     const int n = int(adj.neighbours[v].size());
     if (tris == 0) {  // Catmull-Clark: (n-2)/n v + sum p / n^2 + sum F / n^2
         d.add(v, double(n - 2) / n);
-        for (int w : adj.neighbours[v]) d.add(w, 1.0 / (n * n));
-        for (int f : adj.vertexFaces[v]) d.addCentroid(adj.faces[f], 1.0 / (n * n));
+        for (int w : adj.neighbours[v])
+            d.add(w, 1.0 / (n * n));
+        for (int f : adj.vertexFaces[v])
+            d.addCentroid(adj.faces[f], 1.0 / (n * n));
         return d.w;
     }
     if (others == 0) {  // Loop: (1 - n beta) v + beta sum p
         const double beta = loopBeta(n);
         d.add(v, 1.0 - n * beta);
-        for (int w : adj.neighbours[v]) d.add(w, beta);
+        for (int w : adj.neighbours[v])
+            d.add(w, beta);
         return d.w;
     }
     return std::nullopt;
@@ -185,7 +197,8 @@ OracleCounts checkOracles(const LocalMesh& mesh, const Options& options, int lev
         const std::string where = name + " level " + std::to_string(L);
         int nonTriangles = 0;
         for (int f = 0; f < int(adj.faces.size()); ++f)
-            if (!adj.isTriangle(f)) ++nonTriangles;
+            if (!adj.isTriangle(f))
+                ++nonTriangles;
         EXPECT_EQ(table.numSourceVertices, parent.numVertices) << where;
         EXPECT_EQ(t.numVertices, parent.numVertices) << where;
         EXPECT_EQ(t.numFaces(), parent.numFaces()) << where;
@@ -195,23 +208,27 @@ OracleCounts checkOracles(const LocalMesh& mesh, const Options& options, int lev
             t.numEdges() != int(adj.edgeFaces.size()))
             return counts;
         std::map<Key, int> edgeIndex;
-        for (int e = 0; e < t.numEdges(); ++e) edgeIndex[edgeKey(t.edgeVerts[2 * e], t.edgeVerts[2 * e + 1])] = e;
+        for (int e = 0; e < t.numEdges(); ++e)
+            edgeIndex[edgeKey(t.edgeVerts[2 * e], t.edgeVerts[2 * e + 1])] = e;
 
         auto compare = [&](int child, const std::vector<double>& expected, const std::string& what) {
             const std::vector<double> actual = denseStencil(table, child);
             const double diff = maxAbsDifference(actual, expected);
-            EXPECT_LE(diff, kWeightTol) << where << ", " << what << " (child " << child << ")\n  expected:"
-                                        << describe(expected) << "\n  actual:  " << describe(actual);
+            EXPECT_LE(diff, kWeightTol) << where << ", " << what << " (child " << child
+                                        << ")\n  expected:" << describe(expected)
+                                        << "\n  actual:  " << describe(actual);
         };
         for (int f = 0; f < int(adj.faces.size()); ++f) {
-            if (adj.isTriangle(f)) continue;
+            if (adj.isTriangle(f))
+                continue;
             compare(childOfFace(t, f), *expectedFacePoint(adj, f), "face " + std::to_string(f));
             ++counts.faces;
         }
         for (const auto& [key, faces] : adj.edgeFaces) {
             auto it = edgeIndex.find(key);
             EXPECT_NE(it, edgeIndex.end()) << where << ": no edge " << key.first << "-" << key.second;
-            if (it == edgeIndex.end()) continue;
+            if (it == edgeIndex.end())
+                continue;
             compare(childOfEdge(t, it->second), *expectedEdgePoint(adj, options, key.first, key.second),
                     "edge " + std::to_string(key.first) + "-" + std::to_string(key.second));
             ++counts.edges;
@@ -229,7 +246,9 @@ OracleCounts checkOracles(const LocalMesh& mesh, const Options& options, int lev
     return counts;
 }
 
-std::string ringName(const std::string& ring) { return "ring " + ring; }
+std::string ringName(const std::string& ring) {
+    return "ring " + ring;
+}
 
 Options stamLoop(BoundaryInterpolation b = BoundaryInterpolation::EdgeOnly) {
     Options o;
@@ -251,7 +270,8 @@ TEST(CatmullClarkRules, QuadRingCentreEdgesAndFaces) {
         const StencilTable& table = refiner.levelStencils(1);
         const int V = ring.mesh.numVertices;
         auto F = [&](Dense& d, int i, double x) {  // face point of quad i, expanded
-            for (int v : {ring.center, ring.p[i], ring.q[i], ring.p[(i + 1) % n]}) d.add(v, x / 4);
+            for (int v : {ring.center, ring.p[i], ring.q[i], ring.p[(i + 1) % n]})
+                d.add(v, x / 4);
         };
         // Vertex point: (n-2)/n c + 1/n^2 sum p_i + 1/n^2 sum F_i.
         Dense vertex(V);
@@ -317,7 +337,8 @@ TEST(LoopRules, Bipyramids) {
         const double beta = loopBeta(n);
         Dense vertex(V);  // (1 - n beta) c + beta sum p_i
         vertex.add(ring.center, 1.0 - n * beta);
-        for (int i = 0; i < n; ++i) vertex.add(ring.p[i], beta);
+        for (int i = 0; i < n; ++i)
+            vertex.add(ring.p[i], beta);
         EXPECT_LE(maxAbsDifference(denseStencil(table, childOfVertex(t, ring.center)), vertex.w), kWeightTol)
             << describe(denseStencil(table, childOfVertex(t, ring.center)));
         for (int i = 0; i < n; ++i) {  // 3/8 c + 3/8 p_i + 1/8 p_{i-1} + 1/8 p_{i+1}
@@ -358,23 +379,30 @@ TEST(NgonRules, PrismsMatchCatmullClark) {
         Dense edge(mesh.numVertices);
         edge.add(0, 0.25);
         edge.add(1, 0.25);
-        for (int i = 0; i < n; ++i) edge.add(i, 0.25 / n);  // bottom n-gon centroid
-        for (int v : {0, 1, n + 1, n}) edge.add(v, 0.25 / 4);  // side quad centroid
+        for (int i = 0; i < n; ++i)
+            edge.add(i, 0.25 / n);  // bottom n-gon centroid
+        for (int v : {0, 1, n + 1, n})
+            edge.add(v, 0.25 / 4);  // side quad centroid
         const int e = edgeBetween(t, 0, 1);
         ASSERT_GE(e, 0);
         EXPECT_LE(maxAbsDifference(denseStencil(table, childOfEdge(t, e)), edge.w), kWeightTol)
             << "n = " << n << ":" << describe(denseStencil(table, childOfEdge(t, e)));
         // The n-gon's face point: its centroid.
         Dense face(mesh.numVertices);
-        for (int i = 0; i < n; ++i) face.add(i, 1.0 / n);
+        for (int i = 0; i < n; ++i)
+            face.add(i, 1.0 / n);
         EXPECT_LE(maxAbsDifference(denseStencil(table, childOfFace(t, 0)), face.w), kWeightTol) << "n = " << n;
         // Vertex 0, valence 3: 1/3 v + 1/9 (sum of 3 neighbours) + 1/9 (n-gon + 2 quad centroids).
         Dense vertex(mesh.numVertices);
         vertex.add(0, 1.0 / 3);
-        for (int w : {1, n - 1, n}) vertex.add(w, 1.0 / 9);
-        for (int i = 0; i < n; ++i) vertex.add(i, 1.0 / (9.0 * n));
-        for (int v : {0, 1, n + 1, n}) vertex.add(v, 1.0 / 36);                  // side quad 0
-        for (int v : {n - 1, 0, n, 2 * n - 1}) vertex.add(v, 1.0 / 36);          // side quad n-1
+        for (int w : {1, n - 1, n})
+            vertex.add(w, 1.0 / 9);
+        for (int i = 0; i < n; ++i)
+            vertex.add(i, 1.0 / (9.0 * n));
+        for (int v : {0, 1, n + 1, n})
+            vertex.add(v, 1.0 / 36);  // side quad 0
+        for (int v : {n - 1, 0, n, 2 * n - 1})
+            vertex.add(v, 1.0 / 36);  // side quad n-1
         EXPECT_LE(maxAbsDifference(denseStencil(table, childOfVertex(t, 0)), vertex.w), kWeightTol)
             << "n = " << n << ":" << describe(denseStencil(table, childOfVertex(t, 0)));
 
@@ -397,7 +425,8 @@ TEST(SeamRules, MixedRings) {
         int seams = 0;
         for (int i = 0; i < n; ++i) {
             const int before = (i + n - 1) % n;  // face between p_{i-1} and p_i
-            if ((ring[i] == 'Q') == (ring[before] == 'Q')) continue;
+            if ((ring[i] == 'Q') == (ring[before] == 'Q'))
+                continue;
             const int quad = ring[i] == 'Q' ? i : before;
             const int tri = ring[i] == 'Q' ? before : i;
             const int triOpposite = tri == i ? r.p[(i + 1) % n] : r.p[(i + n - 1) % n];
@@ -450,7 +479,8 @@ TEST(BilinearRules, CornersMidpointsCentroids) {
     EXPECT_NEAR(edge[0], 0.5, kWeightTol);
     EXPECT_NEAR(edge[1], 0.5, kWeightTol);
     const std::vector<double> face = denseStencil(refiner.levelStencils(1), childOfFace(t, 0));
-    for (int i = 0; i < 5; ++i) EXPECT_NEAR(face[i], 0.2, kWeightTol);
+    for (int i = 0; i < 5; ++i)
+        EXPECT_NEAR(face[i], 0.2, kWeightTol);
 }
 
 // ---- (e) Boundaries -----------------------------------------------------------------------
@@ -501,8 +531,10 @@ TEST(BoundaryRules, ExplicitQuadGrid) {
         // Interior vertex 5 next to the boundary: regular Catmull-Clark 9/16, 3/32, 1/64.
         w = denseStencil(table, childOfVertex(t, 5));
         EXPECT_NEAR(w[5], 9.0 / 16, kWeightTol);
-        for (int p : {1, 4, 6, 9}) EXPECT_NEAR(w[p], 3.0 / 32, kWeightTol);
-        for (int q : {0, 2, 8, 10}) EXPECT_NEAR(w[q], 1.0 / 64, kWeightTol);
+        for (int p : {1, 4, 6, 9})
+            EXPECT_NEAR(w[p], 3.0 / 32, kWeightTol);
+        for (int q : {0, 2, 8, 10})
+            EXPECT_NEAR(w[q], 1.0 / 64, kWeightTol);
     }
 }
 
@@ -539,9 +571,8 @@ TEST(BoundaryRules, ExplicitTriangleGridCorners) {
 // their endpoints, since edge numbering may follow the traversal).
 TEST(Rules, LeftHandedInputGivesTheSameWeights) {
     const std::vector<std::pair<std::string, LocalMesh>> meshes = {
-        {"ring QQTT", buildRingMesh("QQTT").mesh}, {"ring QTT", buildRingMesh("QTT").mesh},
-        {"prism 5", buildPrism(5)},                {"triangle grid", buildGrid(3, 2, true)},
-        {"quad grid", buildGrid(2, 3, false)},
+        {"ring QQTT", buildRingMesh("QQTT").mesh}, {"ring QTT", buildRingMesh("QTT").mesh}, {"prism 5", buildPrism(5)},
+        {"triangle grid", buildGrid(3, 2, true)},  {"quad grid", buildGrid(2, 3, false)},
     };
     for (const auto& [name, mesh] : meshes) {
         LocalMesh flipped = mesh;
@@ -590,6 +621,60 @@ TEST(Rules, UnusedVertexStaysPut) {
     Dense expected(mesh.numVertices);
     expected.add(unused, 1.0);
     EXPECT_LE(maxAbsDifference(w, expected.w), kWeightTol) << describe(w);
+}
+
+// ---- Semi-sharp edges (DESIGN.md 6) -----------------------------------------------------------
+
+// 4 x 4 quad grid; the middle row's edges (1,2)-(2,2), (2,2)-(3,2), (3,2)-(4,2) get sharpness
+// side, s, side. The edge point of (2,2)-(3,2) is the crease midpoint while both of its child
+// halves stay sharp, else s * midpoint + (1 - s) * smooth (s not clamped, as OpenSubdiv does).
+struct SemiSharpCase {
+    CreaseMethod method;
+    float s, side;
+    bool childSharp;  // derived by hand below
+};
+
+TEST(CreaseRules, SemiSharpEdgePoint) {
+    // Child sharpness of the middle edge at (2,2) (and, by symmetry, at (3,2)):
+    //   Uniform: s - 1.  Chaikin: the other semi-sharp edge there has `side`, so
+    //   max(0, 3/4 s + 1/4 side - 1).
+    const SemiSharpCase cases[] = {
+        {CreaseMethod::Uniform, 0.4f, 0.0f, false},  // 0.4 - 1 < 0: blend 0.4 / 0.6
+        {CreaseMethod::Uniform, 1.2f, 0.1f, true},   // 0.2 > 0: midpoint
+        {CreaseMethod::Chaikin, 0.8f, 3.0f, true},   // 0.6 + 0.75 - 1 = 0.35 > 0: midpoint
+        {CreaseMethod::Chaikin, 1.2f, 0.1f, false},  // 0.9 + 0.025 - 1 < 0: blend 1.2 / -0.2
+        {CreaseMethod::Chaikin, 1.05f, 0.0f, true},  // no other semi-sharp edge: uniform, 0.05 > 0
+    };
+    for (const SemiSharpCase& c : cases) {
+        SCOPED_TRACE(std::string(toString(c.method)) + " s = " + std::to_string(c.s) + ", side " +
+                     std::to_string(c.side));
+        LocalMesh grid = buildGrid(4, 4, false);
+        auto V = [](int i, int j) { return 5 * j + i; };
+        grid.creasePairs = {V(1, 2), V(2, 2), V(2, 2), V(3, 2), V(3, 2), V(4, 2)};
+        grid.creaseWeights = {c.side, c.s, c.side};
+        Options o = stamLoop();
+        o.creaseMethod = c.method;
+        Refiner refiner(grid.descriptor(), o);
+        refiner.refineUniform(1);
+        const Topology& t = refiner.level(0);
+        const int a = V(2, 2), b = V(3, 2);
+        const int e = edgeBetween(t, a, b);
+        ASSERT_GE(e, 0);
+        Dense expected(grid.numVertices);
+        const double w = c.childSharp ? 1.0 : double(c.s);
+        expected.add(a, 0.5 * w);
+        expected.add(b, 0.5 * w);
+        if (!c.childSharp) {  // (1 - s) * Catmull-Clark edge point
+            const double k = 1.0 - double(c.s);
+            expected.add(a, 0.25 * k);
+            expected.add(b, 0.25 * k);
+            for (int v : {V(2, 1), V(3, 1), V(3, 2), V(2, 2), V(2, 2), V(3, 2), V(3, 3), V(2, 3)})
+                expected.add(v, 0.25 * k / 4);
+        }
+        const std::vector<double> actual = denseStencil(refiner.levelStencils(1), childOfEdge(t, e));
+        EXPECT_LE(maxAbsDifference(actual, expected.w), kWeightTol)
+            << "expected:" << describe(expected.w) << "\nactual:  " << describe(actual);
+    }
 }
 
 // ---- (f) Partition of unity ---------------------------------------------------------------

@@ -47,23 +47,47 @@ LocalMesh cubeWithFace2(const std::vector<int>& corners) {
     return m;
 }
 
-// The TopologyError message of building a Refiner, or "" when none was thrown. Any other
-// exception propagates and fails the test.
-std::string errorOf(const TopologyDescriptor& d, const Options& o = Options()) {
+// What building a Refiner from `d` threw: a TopologyError's message and the component/index it
+// blames, or thrown == false. Any other exception propagates and fails the test.
+struct Refusal {
+    bool thrown = false;
+    std::string message;
+    TopologyError::Component component = TopologyError::Component::None;
+    int index = -1;
+};
+
+Refusal refusalOf(const TopologyDescriptor& d, const Options& o = Options()) {
+    Refusal r;
     try {
         Refiner refiner(d, o);
     } catch (const TopologyError& e) {
-        return e.what();
+        r.thrown = true;
+        r.message = e.what();
+        r.component = e.component();
+        r.index = e.index();
     }
-    return "";
+    return r;
 }
 
-void expectRefused(const TopologyDescriptor& d, const std::vector<std::string>& mustContain,
-                   const std::string& what) {
-    const std::string message = errorOf(d);
-    EXPECT_FALSE(message.empty()) << what << ": accepted";
+std::string errorOf(const TopologyDescriptor& d, const Options& o = Options()) {
+    return refusalOf(d, o).message;
+}
+
+using Component = TopologyError::Component;
+
+// Refused with every substring of `mustContain` in the message; where `component` is given, the
+// error also blames that input item (for a reader to point at the file line).
+void expectRefused(const TopologyDescriptor& d, const std::vector<std::string>& mustContain, const std::string& what,
+                   Component component = Component::None, int index = -1) {
+    const Refusal r = refusalOf(d);
+    EXPECT_TRUE(r.thrown) << what << ": accepted";
     for (const std::string& s : mustContain)
-        EXPECT_NE(message.find(s), std::string::npos) << what << ": message \"" << message << "\" lacks \"" << s << "\"";
+        EXPECT_NE(r.message.find(s), std::string::npos)
+            << what << ": message \"" << r.message << "\" lacks \"" << s << "\"";
+    if (component != Component::None) {
+        EXPECT_EQ(int(r.component), int(component)) << what << ": " << r.message;
+        EXPECT_EQ(r.index, index) << what << ": " << r.message;
+    }
 }
 
 TEST(Validation, ValidCubeIsAccepted) {
@@ -72,50 +96,55 @@ TEST(Validation, ValidCubeIsAccepted) {
 }
 
 TEST(Validation, FaceWithFewerThanThreeVertices) {
-    expectRefused(cubeWithFace2({0, 4}).descriptor(), {"face 2", "2 vertices", "at least 3"}, "2-gon");
-    expectRefused(cubeWithFace2({0}).descriptor(), {"face 2", "1 vertices", "at least 3"}, "1-gon");
-    expectRefused(cubeWithFace2({}).descriptor(), {"face 2", "0 vertices", "at least 3"}, "0-gon");
+    expectRefused(cubeWithFace2({0, 4}).descriptor(), {"face 2", "2 vertices", "at least 3"}, "2-gon", Component::Face,
+                  2);
+    expectRefused(cubeWithFace2({0}).descriptor(), {"face 2", "1 vertices", "at least 3"}, "1-gon", Component::Face, 2);
+    expectRefused(cubeWithFace2({}).descriptor(), {"face 2", "0 vertices", "at least 3"}, "0-gon", Component::Face, 2);
     // A negative count: face 2 claims -1 corners (the arrays are otherwise the cube's).
     LocalMesh m = cube();
     m.faceSizes[2] = -1;
-    expectRefused(m.descriptor(), {"face 2", "at least 3"}, "negative size");
+    expectRefused(m.descriptor(), {"face 2", "at least 3"}, "negative size", Component::Face, 2);
 }
 
 TEST(Validation, VertexIndexOutOfRange) {
-    expectRefused(cubeWithFace2({0, 4, 8, 1}).descriptor(), {"face 2", "vertex index 8", "out of range"}, "index 8");
-    expectRefused(cubeWithFace2({0, 4, -1, 1}).descriptor(), {"face 2", "vertex index -1", "out of range"},
-                  "index -1");
+    expectRefused(cubeWithFace2({0, 4, 8, 1}).descriptor(), {"face 2", "vertex index 8", "out of range"}, "index 8",
+                  Component::Face, 2);
+    expectRefused(cubeWithFace2({0, 4, -1, 1}).descriptor(), {"face 2", "vertex index -1", "out of range"}, "index -1",
+                  Component::Face, 2);
     expectRefused(cubeWithFace2({0, 4, 1000000, 1}).descriptor(), {"face 2", "1000000", "out of range"},
-                  "index 1000000");
+                  "index 1000000", Component::Face, 2);
 }
 
 TEST(Validation, VertexRepeatedInAFace) {
-    expectRefused(cubeWithFace2({0, 4, 0, 1}).descriptor(), {"face 2", "vertex 0", "more than once"}, "0 twice");
-    expectRefused(cubeWithFace2({5, 4, 5}).descriptor(), {"face 2", "vertex 5", "more than once"}, "triangle 5 4 5");
+    expectRefused(cubeWithFace2({0, 4, 0, 1}).descriptor(), {"face 2", "vertex 0", "more than once"}, "0 twice",
+                  Component::Face, 2);
+    expectRefused(cubeWithFace2({5, 4, 5}).descriptor(), {"face 2", "vertex 5", "more than once"}, "triangle 5 4 5",
+                  Component::Face, 2);
 }
 
 TEST(Validation, CreaseOnAPairThatIsNotAnEdge) {
     LocalMesh m = cube();
     m.creasePairs = {0, 1, 0, 7};  // 0-1 is an edge, 0-7 is the cube's diagonal
     m.creaseWeights = {2.0f, 2.0f};
-    expectRefused(m.descriptor(), {"crease 1", "0 and 7", "edge"}, "diagonal crease");
+    expectRefused(m.descriptor(), {"crease 1", "0 and 7", "edge"}, "diagonal crease", Component::Crease, 1);
     m.creasePairs = {0, 1, 0, 3};  // 0-3 is a face diagonal
-    expectRefused(m.descriptor(), {"crease 1", "0 and 3", "edge"}, "face-diagonal crease");
+    expectRefused(m.descriptor(), {"crease 1", "0 and 3", "edge"}, "face-diagonal crease", Component::Crease, 1);
     m.creasePairs = {0, 1, 2, 2};
-    expectRefused(m.descriptor(), {"crease 1", "same vertex"}, "degenerate crease");
+    expectRefused(m.descriptor(), {"crease 1", "same vertex"}, "degenerate crease", Component::Crease, 1);
     m.creasePairs = {0, 1, 2, 9};
-    expectRefused(m.descriptor(), {"crease 1", "9", "out of range"}, "crease vertex out of range");
+    expectRefused(m.descriptor(), {"crease 1", "9", "out of range"}, "crease vertex out of range", Component::Crease,
+                  1);
     m.creasePairs = {-3, 1, 0, 1};
-    expectRefused(m.descriptor(), {"crease 0", "-3", "out of range"}, "negative crease vertex");
+    expectRefused(m.descriptor(), {"crease 0", "-3", "out of range"}, "negative crease vertex", Component::Crease, 0);
 }
 
 TEST(Validation, NegativeOrNaNCreaseSharpness) {
     LocalMesh m = cube();
     m.creasePairs = {0, 1, 1, 3};
     m.creaseWeights = {1.0f, -1.0f};
-    expectRefused(m.descriptor(), {"crease 1", "negative"}, "negative crease");
+    expectRefused(m.descriptor(), {"crease 1", "negative"}, "negative crease", Component::Crease, 1);
     m.creaseWeights = {std::numeric_limits<float>::quiet_NaN(), 1.0f};
-    expectRefused(m.descriptor(), {"crease 0", "sharpness"}, "NaN crease");
+    expectRefused(m.descriptor(), {"crease 0", "sharpness"}, "NaN crease", Component::Crease, 0);
     // A valid sharp crease is accepted.
     m.creaseWeights = {1.0f, 10.0f};
     EXPECT_EQ(errorOf(m.descriptor()), "");
@@ -125,14 +154,16 @@ TEST(Validation, CornerProblems) {
     LocalMesh m = cube();
     m.corners = {2, 5};
     m.cornerWeights = {1.0f, -2.0f};
-    expectRefused(m.descriptor(), {"corner 1", "vertex 5", "negative"}, "negative corner");
+    expectRefused(m.descriptor(), {"corner 1", "vertex 5", "negative"}, "negative corner", Component::Corner, 1);
     m.cornerWeights = {std::numeric_limits<float>::quiet_NaN(), 1.0f};
-    expectRefused(m.descriptor(), {"corner 0", "vertex 2", "sharpness"}, "NaN corner");
+    expectRefused(m.descriptor(), {"corner 0", "vertex 2", "sharpness"}, "NaN corner", Component::Corner, 0);
     m.cornerWeights = {1.0f, 1.0f};
     m.corners = {2, 8};
-    expectRefused(m.descriptor(), {"corner 1", "vertex 8", "out of range"}, "corner out of range");
+    expectRefused(m.descriptor(), {"corner 1", "vertex 8", "out of range"}, "corner out of range", Component::Corner,
+                  1);
     m.corners = {-1, 2};
-    expectRefused(m.descriptor(), {"corner 0", "vertex -1", "out of range"}, "negative corner vertex");
+    expectRefused(m.descriptor(), {"corner 0", "vertex -1", "out of range"}, "negative corner vertex",
+                  Component::Corner, 0);
     m.corners = {2, 5};
     EXPECT_EQ(errorOf(m.descriptor()), "");
 }
@@ -144,7 +175,8 @@ TEST(Validation, HoleFaceOutOfRange) {
         TopologyDescriptor d = m.descriptor();
         d.numHoles = 2;
         d.holeIndices = holes.data();
-        expectRefused(d, {"hole 1", "face index " + std::to_string(bad), "out of range"}, "hole " + std::to_string(bad));
+        expectRefused(d, {"hole 1", "face index " + std::to_string(bad), "out of range"}, "hole " + std::to_string(bad),
+                      Component::Hole, 1);
     }
     const std::vector<int> ok = {1, 5};
     TopologyDescriptor d = m.descriptor();
@@ -173,7 +205,7 @@ TEST(Validation, NegativeCounts) {
     // Vertices too few for the faces.
     d = m.descriptor();
     d.numVertices = 7;
-    expectRefused(d, {"face 1", "vertex index 7", "out of range"}, "numVertices 7");
+    expectRefused(d, {"face 1", "vertex index 7", "out of range"}, "numVertices 7", Component::Face, 1);
 }
 
 TEST(Validation, NullArraysWithNonzeroCounts) {

@@ -36,6 +36,7 @@ Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     Options options = mesh.applyTags(Options());
     if (args.scheme) options.scheme = *args.scheme;
     if (args.boundary) options.boundary = *args.boundary;
+    if (args.creaseMethod) options.creaseMethod = *args.creaseMethod;
     return options;
 }
 
@@ -58,6 +59,20 @@ int countFlag(const std::vector<uint8_t>& flags, T flag) {
 }
 
 
+// Boundary edges are infinitely sharp by rule; count the sharp edges the mesh asks for.
+struct SharpEdges {
+    int sharp = 0, infinite = 0;
+};
+SharpEdges countSharpEdges(const Topology& t) {
+    SharpEdges count;
+    for (int e = 0; e < t.numEdges(); ++e) {
+        if (t.edgeFlags[e] & kEdgeBoundary) continue;
+        count.sharp += t.edgeSharpness[e] > 0;
+        count.infinite += t.edgeSharpness[e] >= kInfiniteSharpness;
+    }
+    return count;
+}
+
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -74,16 +89,10 @@ void printBase(const Topology& t, const Options& options) {
     for (auto [size, count] : sizes) std::printf(" %d-gon %d", size, count);
     std::printf("\n");
 
-    // Boundary edges are infinitely sharp by rule; count the sharp edges the mesh asks for.
-    int sharp = 0, infinite = 0;
-    for (int e = 0; e < t.numEdges(); ++e) {
-        if (t.edgeFlags[e] & kEdgeBoundary) continue;
-        sharp += t.edgeSharpness[e] > 0;
-        infinite += t.edgeSharpness[e] >= kInfiniteSharpness;
-    }
+    SharpEdges sharp = countSharpEdges(t);
     std::printf("edges: boundary %d, non-manifold %d, seam %d, sharp non-boundary %d (infinite %d)\n",
                 countFlag(t.edgeFlags, kEdgeBoundary), countFlag(t.edgeFlags, kEdgeNonManifold),
-                countFlag(t.edgeFlags, kEdgeSeam), sharp, infinite);
+                countFlag(t.edgeFlags, kEdgeSeam), sharp.sharp, sharp.infinite);
     std::printf("vertices: boundary %d, non-manifold %d, seam %d, corner %d, sharp %d\n",
                 countFlag(t.vertFlags, kVertexBoundary), countFlag(t.vertFlags, kVertexNonManifold),
                 countFlag(t.vertFlags, kVertexSeam), countFlag(t.vertFlags, kVertexCorner),
@@ -124,17 +133,18 @@ int runInfo(const InfoArgs& args) {
     printBase(refiner.level(0), options);
 
     refiner.refineUniform(args.level);
-    std::printf("\n| level | vertices | faces | stencils | level table bytes | factorized table bytes |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("\n| level | vertices | faces | sharp edges | stencils | level table bytes | factorized table bytes |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int L = 0; L <= args.level; ++L) {
         const Topology& t = refiner.level(L);
+        const int sharp = countSharpEdges(t).sharp;
         if (L == 0) {
-            std::printf("| 0 | %d | %d | - | - | - |\n", t.numVertices, outputFaces(t));
+            std::printf("| 0 | %d | %d | %d | - | - | - |\n", t.numVertices, outputFaces(t), sharp);
             continue;
         }
         const StencilTable& perLevel = refiner.levelStencils(L);
-        std::printf("| %d | %d | %d | %d | %zu | %zu |\n", L, t.numVertices, outputFaces(t), perLevel.numStencils(),
-                    perLevel.bytes(), refiner.factorizedStencils(L).bytes());
+        std::printf("| %d | %d | %d | %d | %d | %zu | %zu |\n", L, t.numVertices, outputFaces(t), sharp,
+                    perLevel.numStencils(), perLevel.bytes(), refiner.factorizedStencils(L).bytes());
     }
     return 0;
 }

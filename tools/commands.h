@@ -14,6 +14,7 @@ struct MeshArgs {
     std::string input;
     std::optional<Scheme> scheme;                   // default: Stam-Loop
     std::optional<BoundaryInterpolation> boundary;  // default: the file's tag, else edge only
+    std::optional<CreaseMethod> creaseMethod;       // default: the file's tag, else uniform
 };
 
 // Largest refinement level accepted on the command line (the memory budget may refuse less).

@@ -33,6 +33,8 @@ void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
         {"edge-only", BoundaryInterpolation::EdgeOnly},
         {"edge-and-corner", BoundaryInterpolation::EdgeAndCorner},
         {"none", BoundaryInterpolation::None}};
+    static const std::map<std::string, CreaseMethod> creaseMethods{{"uniform", CreaseMethod::Uniform},
+                                                                   {"chaikin", CreaseMethod::Chaikin}};
     cmd.add_option("input", args.input, "Input OBJ file")->required();
     cmd.add_option_function<std::string>(
            "--scheme", [&args](const std::string& s) { args.scheme = schemes.at(s); },
@@ -42,6 +44,10 @@ void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
            "--boundary", [&args](const std::string& s) { args.boundary = boundaries.at(s); },
            "Boundary interpolation; overrides the file's interpolateboundary tag (default edge-only)")
         ->check(oneOf(boundaries, "boundary"));
+    cmd.add_option_function<std::string>(
+           "--crease-method", [&args](const std::string& s) { args.creaseMethod = creaseMethods.at(s); },
+           "Sharpness decay per level; overrides the file's creasemethod tag (default uniform)")
+        ->check(oneOf(creaseMethods, "crease method"));
 }
 
 CLI::Option* addLevel(CLI::App& cmd, const char* name, int& level, const char* help, int minLevel = 0) {
