@@ -373,6 +373,39 @@ bool containsPoint(const std::vector<float>& xyz, float x, float y, float z, flo
     return false;
 }
 
+// No regression shape uses boundary interpolation "none": force it on open shapes and compare
+// positions and which faces become holes, level by level.
+TEST(OsdAgreementBoundaryNone, OpenShapes) {
+    const struct {
+        const char* shape;
+        OsdScheme reference;
+    } shapes[] = {{"catmark_edgecorner", OsdScheme::Catmark}, {"catmark_tent", OsdScheme::Catmark},
+                  {"catmark_xord_boundary", OsdScheme::Catmark}, {"loop_saddle_edgeonly", OsdScheme::Loop},
+                  {"loop_triangle_edgeonly", OsdScheme::Loop}};
+    for (const auto& s : shapes) {
+        Options options;
+        options.boundary = BoundaryInterpolation::None;
+        io::ObjMesh mesh = io::readObj(meshPath(std::string("osd/") + s.shape + ".obj"));
+        mesh.boundary.reset();  // the flag above wins over the file's tag
+        Refiner refiner(mesh.descriptor(), mesh.applyTags(options));
+        refiner.refineUniform(3);
+        const std::vector<std::vector<float>> ours = evaluateLevels(refiner, mesh.positions, 3);
+        const OsdRefinement osd =
+            osdRefine(mesh, s.reference, BoundaryInterpolation::None, refiner.options().creaseMethod, 3);
+        const double diagonal = boundingBoxDiagonal(mesh.positions);
+        for (int L = 0; L <= 3; ++L) {
+            const Topology& t = refiner.level(L);
+            int holes = 0;
+            for (uint8_t h : t.faceHole) holes += h;
+            EXPECT_GT(holes, 0) << s.shape << " level " << L;
+            EXPECT_EQ(holes, osd.numHoleFaces(L)) << s.shape << " level " << L;
+            const PositionMatch m = matchPositions(ours[L], osd.positions[L], diagonal, 1e-5);
+            EXPECT_TRUE(m.countsEqual) << s.shape << " level " << L;
+            EXPECT_LE(m.maxRelative(), 1e-5) << s.shape << " level " << L;
+        }
+    }
+}
+
 TEST(OsdReference, CatmarkCube) {
     const OsdRefinement r =
         osdRefine(unitCube(), OsdScheme::Catmark, BoundaryInterpolation::EdgeOnly, CreaseMethod::Uniform, 2);
