@@ -10,6 +10,7 @@ namespace quadtri {
 enum class Scheme {
     Bilinear,  // linear subdivision only: corners stay, edge midpoints, face centroids
     StamLoop,  // Stam-Loop quad/triangle: Catmull-Clark on quads, Loop on triangles, corrected mixed vertices
+    SchaeferWarren,  // Stam-Loop plus unzipping of the tri/quad network: C2 across the ordinary seam
 };
 
 enum class BoundaryInterpolation {
@@ -24,7 +25,7 @@ enum class CreaseMethod {
 };
 
 struct Options {
-    Scheme scheme = Scheme::StamLoop;
+    Scheme scheme = Scheme::SchaeferWarren;
     BoundaryInterpolation boundary = BoundaryInterpolation::EdgeOnly;
     CreaseMethod creaseMethod = CreaseMethod::Uniform;
     // Faces are listed clockwise. Only the orientation of faces depends on it; no weight does.

@@ -52,17 +52,8 @@ StencilTable Refiner::factorizedStencils(int L) const {
     if (L < 1 || L > maxLevel())
         throw TopologyError("factorized stencils asked for level " + std::to_string(L) + "; refined levels are 1.." +
                             std::to_string(maxLevel()));
-    auto asDouble = [](const StencilTable& t) {
-        StencilTableD d;
-        d.numSourceVertices = t.numSourceVertices;
-        d.sizes = t.sizes;
-        d.offsets = t.offsets;
-        d.indices = t.indices;
-        d.weights.assign(t.weights.begin(), t.weights.end());
-        return d;
-    };
-    StencilTableD composed = asDouble(levelTables_[0]);
-    for (int l = 2; l <= L; ++l) composed = composeStencils(asDouble(levelTables_[l - 1]), composed);
+    StencilTableD composed = toDoubleTable(levelTables_[0]);
+    for (int l = 2; l <= L; ++l) composed = composeStencils(toDoubleTable(levelTables_[l - 1]), composed);
     return toFloatTable(composed);
 }
 

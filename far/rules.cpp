@@ -10,8 +10,10 @@
 #include "far/rules.h"
 
 #include <cmath>
+#include <optional>
 
 #include "far/crease.h"
+#include "far/schaefer_warren.h"
 #include "far/sparse_accumulator.h"
 
 namespace quadtri {
@@ -38,6 +40,14 @@ namespace {
 struct Level {
     const Topology& t;
     SparseAccumulator& acc;
+    SchaeferWarrenMasks* unzipped;  // the smooth path of Schaefer-Warren, null for Stam-Loop
+
+    void facePoint(int f) {
+        if (unzipped)
+            unzipped->facePoint(f, 1.0);
+        else
+            centroid(f, 1.0);
+    }
 
     void centroid(int f, double scale) {
         const int b = t.faceOffsets[f], n = t.faceSize(f);
@@ -50,6 +60,7 @@ struct Level {
     }
 
     void edgeSmooth(int e, double scale) {
+        if (unzipped) return unzipped->edgePoint(e, scale);
         const int a = t.edgeVerts[2 * e], b = t.edgeVerts[2 * e + 1];
         int tris = 0, quads = 0;
         for (int i = t.edgeFaceOffsets[e]; i < t.edgeFaceOffsets[e + 1]; ++i)
@@ -69,6 +80,7 @@ struct Level {
     }
 
     void vertexSmooth(int v, double scale) {
+        if (unzipped) return unzipped->vertexPoint(v, scale);
         const int nE = t.vertexEdgeCount(v);
         const VertexFaceCounts counts = countVertexFaces(t, v);
         const double alpha = 1.0 / (1.0 + 0.5 * nE + 0.25 * counts.quads);
@@ -127,7 +139,9 @@ StencilTableD buildLevelStencils(const Topology& t, const ChildNumbering& num, c
     table.indices.reserve(bound);
     table.weights.reserve(bound);
     SparseAccumulator acc(t.numVertices);
-    Level level{t, acc};
+    std::optional<SchaeferWarrenMasks> unzipped;
+    if (options.scheme == Scheme::SchaeferWarren) unzipped.emplace(t, acc);
+    Level level{t, acc, unzipped ? &*unzipped : nullptr};
     const bool linear = options.scheme == Scheme::Bilinear;
     auto emit = [&]() {
         table.offsets.push_back(int(table.indices.size()));
@@ -136,7 +150,7 @@ StencilTableD buildLevelStencils(const Topology& t, const ChildNumbering& num, c
 
     for (int f = 0; f < t.numFaces(); ++f) {
         if (num.facePoint[f] < 0) continue;
-        level.centroid(f, 1.0);
+        level.facePoint(f);
         emit();
     }
 

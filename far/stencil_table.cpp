@@ -2,7 +2,6 @@
 // tables into factorized ones.
 #include "far/stencil_table.h"
 
-#include "far/rules.h"
 #include "far/sparse_accumulator.h"
 
 namespace quadtri {
@@ -15,6 +14,16 @@ StencilTable toFloatTable(const StencilTableD& d) {
     t.indices = d.indices;
     t.weights.assign(d.weights.begin(), d.weights.end());
     return t;
+}
+
+StencilTableD toDoubleTable(const StencilTable& t) {
+    StencilTableD d;
+    d.numSourceVertices = t.numSourceVertices;
+    d.sizes = t.sizes;
+    d.offsets = t.offsets;
+    d.indices = t.indices;
+    d.weights.assign(t.weights.begin(), t.weights.end());
+    return d;
 }
 
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner) {

@@ -22,4 +22,20 @@ struct StencilTable {
     }
 };
 
+// The same table with double weights: how the analyzer builds and composes tables.
+struct StencilTableD {
+    int numSourceVertices = 0;
+    std::vector<int> sizes;
+    std::vector<int> offsets;
+    std::vector<int> indices;
+    std::vector<double> weights;
+};
+
+// The float table stored for evaluation, and back.
+StencilTable toFloatTable(const StencilTableD& table);
+StencilTableD toDoubleTable(const StencilTable& table);
+
+// outer ∘ inner: stencils of `outer` (over inner's stencils) expanded over inner's sources.
+StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner);
+
 }  // namespace quadtri

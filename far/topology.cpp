@@ -10,6 +10,7 @@ const char* toString(Scheme scheme) {
     switch (scheme) {
     case Scheme::Bilinear: return "bilinear";
     case Scheme::StamLoop: return "stam-loop";
+    case Scheme::SchaeferWarren: return "schaefer-warren";
     }
     return "?";
 }

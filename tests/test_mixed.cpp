@@ -177,21 +177,29 @@ TEST_P(MixedMesh, AffineInvariance) {
 }
 
 // Non-trivial geometry: refinement moves vertices (so the affine test is not vacuous) and keeps
-// the surface within the control cage's bounding box scale.
+// the surface near the control cage. Stam-Loop's masks are convex near the cage, so its level 1
+// stays inside the cage's bounding box; Schaefer-Warren's unzip masks have negative weights
+// (−1/48), which may push a level slightly out: allow 2 % of the diagonal there.
 TEST_P(MixedMesh, RefinementMovesVertices) {
-    const RefinedMesh r = refineMesh(GetParam(), 1);
-    const Topology& t = r.refiner->level(0);
-    int facePoints = 0;
-    for (int f = 0; f < t.numFaces(); ++f)
-        facePoints += t.faceSize(f) == 3 ? 0 : 1;
-    double moved = 0;
-    for (int v = 0; v < t.numVertices; ++v) {
-        const int child = facePoints + t.numEdges() + v;
-        for (int c = 0; c < 3; ++c)
-            moved = std::max(moved, std::fabs(double(r.positions[1][3 * child + c]) - r.mesh.positions[3 * v + c]));
+    for (Scheme scheme : {Scheme::StamLoop, Scheme::SchaeferWarren}) {
+        Options options;
+        options.scheme = scheme;
+        const RefinedMesh r = refineMesh(GetParam(), 1, options);
+        const Topology& t = r.refiner->level(0);
+        int facePoints = 0;
+        for (int f = 0; f < t.numFaces(); ++f)
+            facePoints += t.faceSize(f) == 3 ? 0 : 1;
+        double moved = 0;
+        for (int v = 0; v < t.numVertices; ++v) {
+            const int child = facePoints + t.numEdges() + v;
+            for (int c = 0; c < 3; ++c)
+                moved = std::max(moved, std::fabs(double(r.positions[1][3 * child + c]) - r.mesh.positions[3 * v + c]));
+        }
+        const double cage = boundingBoxDiagonal(r.mesh.positions);
+        const double slack = scheme == Scheme::StamLoop ? 1e-6 : 0.02;
+        EXPECT_GT(moved, 1e-3 * cage) << GetParam() << " " << toString(scheme);
+        EXPECT_LE(boundingBoxDiagonal(r.positions[1]), cage * (1 + slack)) << GetParam() << " " << toString(scheme);
     }
-    EXPECT_GT(moved, 1e-3 * boundingBoxDiagonal(r.mesh.positions)) << GetParam();
-    EXPECT_LE(boundingBoxDiagonal(r.positions[1]), boundingBoxDiagonal(r.mesh.positions) * (1 + 1e-6)) << GetParam();
 }
 
 // The same meshes under Bilinear: same vertex counts, partition of unity, and every vertex

@@ -12,7 +12,7 @@ namespace quadtri::cli {
 // Flags shared by every subcommand.
 struct MeshArgs {
     std::string input;
-    std::optional<Scheme> scheme;                   // default: Stam-Loop
+    std::optional<Scheme> scheme;                   // default: Schaefer-Warren
     std::optional<BoundaryInterpolation> boundary;  // default: the file's tag, else edge only
     std::optional<CreaseMethod> creaseMethod;       // default: the file's tag, else uniform
 };

@@ -27,7 +27,8 @@ CLI::Validator oneOf(const std::map<std::string, T>& names, const std::string& w
 }
 
 void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
-    static const std::map<std::string, Scheme> schemes{{"stam-loop", Scheme::StamLoop},
+    static const std::map<std::string, Scheme> schemes{{"schaefer-warren", Scheme::SchaeferWarren},
+                                                       {"stam-loop", Scheme::StamLoop},
                                                        {"bilinear", Scheme::Bilinear}};
     static const std::map<std::string, BoundaryInterpolation> boundaries{
         {"edge-only", BoundaryInterpolation::EdgeOnly},
@@ -38,7 +39,7 @@ void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
     cmd.add_option("input", args.input, "Input OBJ file")->required();
     cmd.add_option_function<std::string>(
            "--scheme", [&args](const std::string& s) { args.scheme = schemes.at(s); },
-           "Subdivision scheme (default stam-loop)")
+           "Subdivision scheme (default schaefer-warren)")
         ->check(oneOf(schemes, "scheme"));
     cmd.add_option_function<std::string>(
            "--boundary", [&args](const std::string& s) { args.boundary = boundaries.at(s); },

@@ -1,0 +1,42 @@
+// Schaefer-Warren's smooth rules (DESIGN.md §4): unzip the tri/quad network, subdivide each
+// piece linearly, then average typed centroids (a quad's centroid from quad copies, a triangle's
+// ¼ x + ⅜ (other corners) from triangle copies) weighted by the angle each face spans in the
+// ordinary layout (π/2, π/3). Old vertices are corrected as in Stam-Loop with v0 the pre-unzip
+// position, so that away from the network the masks equal Stam-Loop's exactly.
+#pragma once
+
+#include "far/sparse_accumulator.h"
+#include "far/stencil_table.h"
+#include "far/topology.h"
+
+namespace quadtri {
+
+class SchaeferWarrenMasks {
+public:
+    SchaeferWarrenMasks(const Topology& topology, SparseAccumulator& accumulator);
+
+    void facePoint(int face, double scale);
+    void edgePoint(int edge, double scale);      // smooth rule of an edge with two faces
+    void vertexPoint(int vertex, double scale);  // smooth rule, with the η correction
+
+private:
+    // A point of the linearly subdivided mesh: a parent vertex, an edge midpoint or a face centre.
+    struct Point {
+        enum Kind { Vertex, Edge, Face } kind;
+        int index;
+    };
+    void addCopy(int vertex, bool quad, double scale);
+    void addPoint(Point p, bool quad, double scale);
+    // Centroid of a child quad (4 corners) or the triangle centroid ¼ x + ⅜ (b + c) of a child
+    // triangle whose first corner x is the vertex being averaged.
+    void addCentroid(const Point* corners, int count, double scale);
+    int cornerOfEdge(int face, int edge) const;
+    int cornerOfVertex(int face, int vertex) const;
+    int edgeAt(int face, int corner) const;  // edge from corner to corner + 1 (cyclic)
+
+    const Topology& t_;
+    SparseAccumulator& acc_;
+    StencilTableD triangleCopies_, quadCopies_;
+};
+
+}  // namespace quadtri
