@@ -37,7 +37,8 @@ struct Options {
 // Sharpness at or above this value is infinitely sharp.
 constexpr float kInfiniteSharpness = 10.0f;
 
-// The mesh as plain arrays; nothing is copied until the Refiner is built.
+// The mesh as plain arrays; nothing is copied until the Refiner is built. A face corner equal to
+// the corner before it is a collapsed edge and is dropped (`4 3 5 5` is the triangle `4 3 5`).
 struct TopologyDescriptor {
     int numVertices = 0;
     int numFaces = 0;

@@ -220,9 +220,18 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     validateDescriptor(desc);
     Topology t;
     t.numVertices = desc.numVertices;
-    t.faceOffsets.assign(desc.numFaces + 1, 0);
-    for (int f = 0; f < desc.numFaces; ++f) t.faceOffsets[f + 1] = t.faceOffsets[f] + desc.numVertsPerFace[f];
-    t.faceVerts.assign(desc.faceVertIndices, desc.faceVertIndices + t.faceOffsets.back());
+    // Corners repeating the previous corner (collapsed edges) are dropped: a quad with a collapsed
+    // edge is a triangle. validateDescriptor() has rejected every other repeat.
+    t.faceOffsets.assign(1, 0);
+    t.faceOffsets.reserve(desc.numFaces + 1);
+    const int* verts = desc.faceVertIndices;
+    for (int f = 0; f < desc.numFaces; ++f) {
+        const int n = desc.numVertsPerFace[f];
+        for (int i = 0; i < n; ++i)
+            if (verts[i] != verts[(i + n - 1) % n]) t.faceVerts.push_back(verts[i]);
+        t.faceOffsets.push_back(int(t.faceVerts.size()));
+        verts += n;
+    }
     if (options.leftHanded) {  // store counter-clockwise: keep the first corner, reverse the rest
         for (int f = 0; f < desc.numFaces; ++f)
             std::reverse(t.faceVerts.begin() + t.faceOffsets[f] + 1, t.faceVerts.begin() + t.faceOffsets[f + 1]);

@@ -59,7 +59,17 @@ void validateDescriptor(const TopologyDescriptor& d) {
                 fail(face(f) + ": vertex index " + std::to_string(verts[i]) + " is out of range [0, " +
                      std::to_string(d.numVertices) + ")",
                      Component::Face, f);
-        sorted.assign(verts, verts + n);
+        // A corner equal to the one before it (cyclically) is a collapsed edge and is dropped; any
+        // other repeat is an error, and so is a face left with fewer than 3 corners.
+        sorted.clear();
+        for (int i = 0; i < n; ++i)
+            if (verts[i] != verts[(i + n - 1) % n]) sorted.push_back(verts[i]);
+        if (sorted.size() < 3) {
+            const int v = verts[0];
+            fail(face(f) + ": vertex " + std::to_string(v) + " appears more than once, leaving " +
+                     std::to_string(sorted.size()) + " distinct corners; a face needs at least 3",
+                 Component::Face, f);
+        }
         std::sort(sorted.begin(), sorted.end());
         const auto dup = std::adjacent_find(sorted.begin(), sorted.end());
         if (dup != sorted.end())

@@ -98,9 +98,14 @@ file(WRITE "${WORK}/badnum.obj" "v 0 0 0\nv 1 zero 0\n")
 run(2 info "${WORK}/badnum.obj")
 expect_contains("${ERR}" "badnum.obj:2:")
 
-file(WRITE "${WORK}/repeated.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 3 4\n")
+file(WRITE "${WORK}/repeated.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4 3\n")
 run(2 refine "${WORK}/repeated.obj" --level 1 -o "${WORK}/x.obj")
 expect_contains("${ERR}" "repeated.obj:6: face 1: vertex 2 appears more than once")
+
+# A corner repeating the previous one is a collapsed edge: the quad is read as a triangle.
+file(WRITE "${WORK}/collapsed.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 3 4\n")
+run(0 info "${WORK}/collapsed.obj")
+expect_contains("${OUT}" "3-gon 2")
 
 # A crease tag on two vertices that share no edge names the tag's line.
 file(WRITE "${WORK}/crease.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\nt crease 2/1/0 1 3 2.0\n")

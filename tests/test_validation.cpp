@@ -301,4 +301,23 @@ TEST(Validation, RefineToLevelZeroAndNegativeLevels) {
     EXPECT_EQ(refiner.maxLevel(), 1);
 }
 
+// A corner equal to the previous one (cyclically) is a collapsed edge: dropped, not an error.
+TEST(Validation, CollapsedEdgeIsDropped) {
+    const std::vector<int> sizes = {4, 4};
+    const std::vector<int> verts = {0, 1, 2, 2, 3, 3, 1, 0};  // quads 0 1 2 2 and 3 3 1 0
+    TopologyDescriptor d;
+    d.numVertices = 4;
+    d.numFaces = 2;
+    d.numVertsPerFace = sizes.data();
+    d.faceVertIndices = verts.data();
+    Refiner refiner(d, Options());
+    const Topology& t = refiner.level(0);
+    ASSERT_EQ(t.numFaces(), 2);
+    EXPECT_EQ(t.faceSize(0), 3);
+    EXPECT_EQ(t.faceSize(1), 3);
+    EXPECT_EQ(std::vector<int>(t.faceVerts.begin(), t.faceVerts.begin() + 3), (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(std::vector<int>(t.faceVerts.begin() + 3, t.faceVerts.end()), (std::vector<int>{3, 1, 0}));
+    EXPECT_EQ(t.numEdges(), 5);
+}
+
 }  // namespace
