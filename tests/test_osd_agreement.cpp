@@ -87,31 +87,34 @@ std::vector<ShapeCase> osdCases() {
         c.shape = shape;
         const FaceStats stats = readFaceStats(meshPath("osd/" + shape + ".obj"));
         c.numFaces = stats.faces;
+        // Pure shapes have no tri/quad seam, so both smooth schemes must equal OpenSubdiv's.
+        std::vector<Scheme> ours = {Scheme::StamLoop, Scheme::SchaeferWarren};
         if (startsWith(shape, "catmark_")) {
             if (stats.triangles > 0) continue;  // Catmark and Stam-Loop differ on triangles by design
             c.reference = OsdScheme::Catmark;
-            c.ours = Scheme::StamLoop;
         } else if (startsWith(shape, "loop_")) {
             c.reference = OsdScheme::Loop;
-            c.ours = Scheme::StamLoop;
         } else if (shape == "bilinear_cube") {
             c.reference = OsdScheme::Bilinear;
-            c.ours = Scheme::Bilinear;
+            ours = {Scheme::Bilinear};
         } else {
             continue;
         }
         // Levels 1-4, and 1-3 for shapes over 500 faces (their level 4 is large and adds nothing).
         const int maxLevel = c.numFaces > 500 ? 3 : 4;
-        for (int level = 1; level <= maxLevel; ++level) {
-            c.level = level;
-            cases.push_back(c);
+        for (Scheme scheme : ours) {
+            c.ours = scheme;
+            for (int level = 1; level <= maxLevel; ++level) {
+                c.level = level;
+                cases.push_back(c);
+            }
         }
     }
     return cases;
 }
 
 std::string caseName(const testing::TestParamInfo<ShapeCase>& info) {
-    std::string name = info.param.shape + "_L" + std::to_string(info.param.level);
+    std::string name = info.param.shape + "_L" + std::to_string(info.param.level) + "_" + toString(info.param.ours);
     for (char& ch : name)
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
     return name;
@@ -313,8 +316,9 @@ TEST_P(OsdAgreement, PositionsMatch) {
 
     // Positions of the tested level, matched one-to-one by position.
     const PositionMatch m = matchPositions(ours.positions.at(c.level), osd.positions.at(c.level), diagonal, kTolerance);
-    std::printf("[ osd      ] %-28s L%d  verts %6d/%-6d  max rel dist %.3g%s\n", c.shape.c_str(), c.level, m.numOurs,
-                m.numReference, m.maxRelative(), m.maxRelative() <= kTolerance && countsOk ? "" : "  FAIL");
+    std::printf("[ osd      ] %-28s L%d %-15s  verts %6d/%-6d  max rel dist %.3g%s\n", c.shape.c_str(), c.level,
+                toString(c.ours), m.numOurs, m.numReference, m.maxRelative(),
+                m.maxRelative() <= kTolerance && countsOk ? "" : "  FAIL");
     if (m.maxRelative() <= kTolerance) return;
 
     std::ostringstream msg;
@@ -375,7 +379,9 @@ bool containsPoint(const std::vector<float>& xyz, float x, float y, float z, flo
 
 // No regression shape uses boundary interpolation "none": force it on open shapes and compare
 // positions and which faces become holes, level by level.
-TEST(OsdAgreementBoundaryNone, OpenShapes) {
+class OsdAgreementBoundaryNone : public testing::TestWithParam<Scheme> {};
+
+TEST_P(OsdAgreementBoundaryNone, OpenShapes) {
     const struct {
         const char* shape;
         OsdScheme reference;
@@ -384,6 +390,7 @@ TEST(OsdAgreementBoundaryNone, OpenShapes) {
                   {"loop_triangle_edgeonly", OsdScheme::Loop}};
     for (const auto& s : shapes) {
         Options options;
+        options.scheme = GetParam();
         options.boundary = BoundaryInterpolation::None;
         io::ObjMesh mesh = io::readObj(meshPath(std::string("osd/") + s.shape + ".obj"));
         mesh.boundary.reset();  // the flag above wins over the file's tag
@@ -405,6 +412,13 @@ TEST(OsdAgreementBoundaryNone, OpenShapes) {
         }
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Schemes, OsdAgreementBoundaryNone, testing::Values(Scheme::StamLoop, Scheme::SchaeferWarren),
+                         [](const testing::TestParamInfo<Scheme>& info) {
+                             std::string name = toString(info.param);
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
 
 TEST(OsdReference, CatmarkCube) {
     const OsdRefinement r =
