@@ -6,25 +6,25 @@
 
 namespace quadtri {
 
-StencilTable toFloatTable(const StencilTableD& d) {
-    StencilTable t;
-    t.numSourceVertices = d.numSourceVertices;
-    t.sizes = d.sizes;
-    t.offsets = d.offsets;
-    t.indices = d.indices;
-    t.weights.assign(d.weights.begin(), d.weights.end());
-    return t;
+namespace {
+
+// The same CSR arrays with the weights converted.
+template <typename Out, typename In>
+Out convertWeights(const In& in) {
+    Out out;
+    out.numSourceVertices = in.numSourceVertices;
+    out.sizes = in.sizes;
+    out.offsets = in.offsets;
+    out.indices = in.indices;
+    out.weights.assign(in.weights.begin(), in.weights.end());
+    return out;
 }
 
-StencilTableD toDoubleTable(const StencilTable& t) {
-    StencilTableD d;
-    d.numSourceVertices = t.numSourceVertices;
-    d.sizes = t.sizes;
-    d.offsets = t.offsets;
-    d.indices = t.indices;
-    d.weights.assign(t.weights.begin(), t.weights.end());
-    return d;
-}
+}  // namespace
+
+StencilTable toFloatTable(const StencilTableD& d) { return convertWeights<StencilTable>(d); }
+
+StencilTableD toDoubleTable(const StencilTable& t) { return convertWeights<StencilTableD>(t); }
 
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner) {
     StencilTableD result;

@@ -87,36 +87,6 @@ void buildEdges(Topology& t) {
     }
 }
 
-void buildIncidences(Topology& t) {
-    const int nv = t.numVertices, ne = t.numEdges(), nf = t.numFaces();
-    t.edgeFaceOffsets.assign(ne + 1, 0);
-    for (int e : t.faceEdges) ++t.edgeFaceOffsets[e + 1];
-    countsToOffsets(t.edgeFaceOffsets);
-    t.edgeFaces.resize(t.faceEdges.size());
-    t.vertFaceOffsets.assign(nv + 1, 0);
-    for (int v : t.faceVerts) ++t.vertFaceOffsets[v + 1];
-    countsToOffsets(t.vertFaceOffsets);
-    t.vertFaces.resize(t.faceVerts.size());
-    {
-        std::vector<int> edgeFill(t.edgeFaceOffsets.begin(), t.edgeFaceOffsets.end() - 1);
-        std::vector<int> vertFill(t.vertFaceOffsets.begin(), t.vertFaceOffsets.end() - 1);
-        for (int f = 0; f < nf; ++f)
-            for (int c = t.faceOffsets[f]; c < t.faceOffsets[f + 1]; ++c) {
-                t.edgeFaces[edgeFill[t.faceEdges[c]]++] = f;
-                t.vertFaces[vertFill[t.faceVerts[c]]++] = f;
-            }
-    }
-    t.vertEdgeOffsets.assign(nv + 1, 0);
-    for (int v : t.edgeVerts) ++t.vertEdgeOffsets[v + 1];
-    countsToOffsets(t.vertEdgeOffsets);
-    t.vertEdges.resize(t.edgeVerts.size());
-    std::vector<int> fill(t.vertEdgeOffsets.begin(), t.vertEdgeOffsets.end() - 1);
-    for (int e = 0; e < ne; ++e) {
-        t.vertEdges[fill[t.edgeVerts[2 * e]]++] = e;
-        t.vertEdges[fill[t.edgeVerts[2 * e + 1]]++] = e;
-    }
-}
-
 // Corner index of vertex v in face f.
 int cornerOf(const Topology& t, int f, int v) {
     int c = t.faceOffsets[f];
@@ -199,6 +169,36 @@ void flagVertices(Topology& t) {
 }
 
 }  // namespace
+
+void buildIncidences(Topology& t) {
+    const int nv = t.numVertices, ne = t.numEdges(), nf = t.numFaces();
+    t.edgeFaceOffsets.assign(ne + 1, 0);
+    for (int e : t.faceEdges) ++t.edgeFaceOffsets[e + 1];
+    countsToOffsets(t.edgeFaceOffsets);
+    t.edgeFaces.resize(t.faceEdges.size());
+    t.vertFaceOffsets.assign(nv + 1, 0);
+    for (int v : t.faceVerts) ++t.vertFaceOffsets[v + 1];
+    countsToOffsets(t.vertFaceOffsets);
+    t.vertFaces.resize(t.faceVerts.size());
+    {
+        std::vector<int> edgeFill(t.edgeFaceOffsets.begin(), t.edgeFaceOffsets.end() - 1);
+        std::vector<int> vertFill(t.vertFaceOffsets.begin(), t.vertFaceOffsets.end() - 1);
+        for (int f = 0; f < nf; ++f)
+            for (int c = t.faceOffsets[f]; c < t.faceOffsets[f + 1]; ++c) {
+                t.edgeFaces[edgeFill[t.faceEdges[c]]++] = f;
+                t.vertFaces[vertFill[t.faceVerts[c]]++] = f;
+            }
+    }
+    t.vertEdgeOffsets.assign(nv + 1, 0);
+    for (int v : t.edgeVerts) ++t.vertEdgeOffsets[v + 1];
+    countsToOffsets(t.vertEdgeOffsets);
+    t.vertEdges.resize(t.edgeVerts.size());
+    std::vector<int> fill(t.vertEdgeOffsets.begin(), t.vertEdgeOffsets.end() - 1);
+    for (int e = 0; e < ne; ++e) {
+        t.vertEdges[fill[t.edgeVerts[2 * e]]++] = e;
+        t.vertEdges[fill[t.edgeVerts[2 * e + 1]]++] = e;
+    }
+}
 
 void completeTopology(Topology& t) {
     buildEdges(t);

@@ -76,7 +76,12 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
 void validateDescriptor(const TopologyDescriptor& desc);
 
 // Fills edges, incidences and flags of a topology whose numVertices, faceOffsets and faceVerts
-// are set. Sharpness arrays are sized and zeroed. Used for level 0 and for every refined level.
+// are set. Sharpness arrays are sized and zeroed. Used for level 0; refined levels know their
+// edges and flags by construction (refine_topology.cpp).
 void completeTopology(Topology& topology);
+
+// Fills the edge-face, vertex-face and vertex-edge incidences from faceVerts, faceEdges and
+// edgeVerts.
+void buildIncidences(Topology& topology);
 
 }  // namespace quadtri

@@ -1,0 +1,92 @@
+// Refined levels are built by construction (far/refine_topology.cpp); here they are checked
+// against the generic builder (completeTopology) run on the same child faces.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "far/refine_topology.h"
+#include "tests/test_support.h"
+
+namespace quadtri::test {
+namespace {
+
+std::vector<int> sortedRange(const std::vector<int>& values, int begin, int end) {
+    std::vector<int> out(values.begin() + begin, values.begin() + end);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+void expectSameConnectivity(const Topology& direct, const std::string& where) {
+    Topology generic;
+    generic.numVertices = direct.numVertices;
+    generic.faceOffsets = direct.faceOffsets;
+    generic.faceVerts = direct.faceVerts;
+    completeTopology(generic);
+
+    ASSERT_EQ(direct.numEdges(), generic.numEdges()) << where;
+    // Each face's edges join its consecutive corners.
+    for (int f = 0; f < direct.numFaces(); ++f) {
+        const int b = direct.faceOffsets[f], n = direct.faceSize(f);
+        for (int i = 0; i < n; ++i) {
+            const int e = direct.faceEdges[b + i], u = direct.faceVerts[b + i], w = direct.faceVerts[b + (i + 1) % n];
+            ASSERT_TRUE((direct.edgeVerts[2 * e] == u && direct.edgeVerts[2 * e + 1] == w) ||
+                        (direct.edgeVerts[2 * e] == w && direct.edgeVerts[2 * e + 1] == u))
+                << where << " face " << f << " corner " << i;
+        }
+    }
+    // Same edges with the same faces and flags.
+    for (int e = 0; e < direct.numEdges(); ++e) {
+        const int g = findEdge(generic, direct.edgeVerts[2 * e], direct.edgeVerts[2 * e + 1]);
+        ASSERT_GE(g, 0) << where << " edge " << e;
+        EXPECT_EQ(sortedRange(direct.edgeFaces, direct.edgeFaceOffsets[e], direct.edgeFaceOffsets[e + 1]),
+                  sortedRange(generic.edgeFaces, generic.edgeFaceOffsets[g], generic.edgeFaceOffsets[g + 1]))
+            << where << " edge " << e;
+        EXPECT_EQ(direct.edgeFlags[e], generic.edgeFlags[g]) << where << " edge " << e;
+    }
+    for (int v = 0; v < direct.numVertices; ++v) {
+        EXPECT_EQ(sortedRange(direct.vertFaces, direct.vertFaceOffsets[v], direct.vertFaceOffsets[v + 1]),
+                  sortedRange(generic.vertFaces, generic.vertFaceOffsets[v], generic.vertFaceOffsets[v + 1]))
+            << where << " vertex " << v;
+        EXPECT_EQ(direct.vertexEdgeCount(v), generic.vertexEdgeCount(v)) << where << " vertex " << v;
+        EXPECT_EQ(direct.vertFlags[v], generic.vertFlags[v]) << where << " vertex " << v;
+    }
+}
+
+TEST(RefineTopology, ChildLevelsEqualTheGenericBuilder) {
+    for (const char* dir : {"osd", "mixed"}) {
+        for (const auto& entry : std::filesystem::directory_iterator(meshPath(dir))) {
+            if (entry.path().extension() != ".obj") continue;
+            const std::string name = std::string(dir) + "/" + entry.path().filename().string();
+            const io::ObjMesh mesh = io::readObj(entry.path().string());
+            const int levels = mesh.numFaces() > 500 ? 1 : 2;
+            Refiner refiner(mesh.descriptor(), mesh.applyTags(Options()));
+            refiner.refineUniform(levels);
+            for (int L = 1; L <= levels; ++L) expectSameConnectivity(refiner.level(L), name + " level " + std::to_string(L));
+        }
+    }
+}
+
+// The halves of parent edge e are child edges 2e (at edgeVerts[2e]) and 2e+1, carrying the
+// decayed sharpness of their end.
+TEST(RefineTopology, HalvesOfParentEdgesCarryTheirSharpness) {
+    const RefinedMesh r = refineMesh("osd/catmark_chaikin0.obj", 1);
+    const Topology& p = r.refiner->level(0);
+    const Topology& c = r.refiner->level(1);
+    const ChildNumbering num = numberChildren(p);
+    int sharpHalves = 0;
+    for (int e = 0; e < p.numEdges(); ++e)
+        for (int side = 0; side < 2; ++side) {
+            const int v = p.edgeVerts[2 * e + side];
+            EXPECT_EQ(findEdge(c, num.vertexPoint(v), num.edgePoint(e)), 2 * e + side);
+            sharpHalves += c.edgeSharpness[2 * e + side] > 0;
+            if (p.edgeSharpness[e] <= 0) {
+                EXPECT_EQ(c.edgeSharpness[2 * e + side], 0.0f);
+            }
+        }
+    EXPECT_GT(sharpHalves, 0);
+    for (int e = 2 * p.numEdges(); e < c.numEdges(); ++e) EXPECT_EQ(c.edgeSharpness[e], 0.0f);
+}
+
+}  // namespace
+}  // namespace quadtri::test
