@@ -43,7 +43,7 @@ struct Level {
     SchaeferWarrenMasks* unzipped;  // the smooth path of Schaefer-Warren, null for Stam-Loop
 
     void facePoint(int f) {
-        if (unzipped)
+        if (unzipped && unzipped->touchesFace(f))
             unzipped->facePoint(f, 1.0);
         else
             centroid(f, 1.0);
@@ -60,7 +60,7 @@ struct Level {
     }
 
     void edgeSmooth(int e, double scale) {
-        if (unzipped) return unzipped->edgePoint(e, scale);
+        if (unzipped && unzipped->touchesEdge(e)) return unzipped->edgePoint(e, scale);
         const int a = t.edgeVerts[2 * e], b = t.edgeVerts[2 * e + 1];
         int tris = 0, quads = 0;
         for (int i = t.edgeFaceOffsets[e]; i < t.edgeFaceOffsets[e + 1]; ++i)
@@ -80,7 +80,7 @@ struct Level {
     }
 
     void vertexSmooth(int v, double scale) {
-        if (unzipped) return unzipped->vertexPoint(v, scale);
+        if (unzipped && unzipped->touchesVertex(v)) return unzipped->vertexPoint(v, scale);
         const int nE = t.vertexEdgeCount(v);
         const VertexFaceCounts counts = countVertexFaces(t, v);
         const double alpha = 1.0 / (1.0 + 0.5 * nE + 0.25 * counts.quads);

@@ -9,7 +9,24 @@ SchaeferWarrenMasks::SchaeferWarrenMasks(const Topology& topology, SparseAccumul
     : t_(topology),
       acc_(accumulator),
       triangleCopies_(unzipStencils(topology, Piece::Triangle)),
-      quadCopies_(unzipStencils(topology, Piece::Quad)) {}
+      quadCopies_(unzipStencils(topology, Piece::Quad)),
+      faceTouches_(topology.numFaces(), 0) {
+    for (int f = 0; f < t_.numFaces(); ++f)
+        for (int c = t_.faceOffsets[f]; c < t_.faceOffsets[f + 1]; ++c)
+            if (quadCopies_.sizes[t_.faceVerts[c]] > 1) faceTouches_[f] = 1;
+}
+
+bool SchaeferWarrenMasks::touchesEdge(int e) const {
+    for (int k = t_.edgeFaceOffsets[e]; k < t_.edgeFaceOffsets[e + 1]; ++k)
+        if (faceTouches_[t_.edgeFaces[k]]) return true;
+    return false;
+}
+
+bool SchaeferWarrenMasks::touchesVertex(int v) const {
+    for (int k = t_.vertFaceOffsets[v]; k < t_.vertFaceOffsets[v + 1]; ++k)
+        if (faceTouches_[t_.vertFaces[k]]) return true;
+    return false;
+}
 
 void SchaeferWarrenMasks::addCopy(int v, bool quad, double scale) {
     const StencilTableD& copies = quad ? quadCopies_ : triangleCopies_;

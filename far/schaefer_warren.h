@@ -9,11 +9,20 @@
 #include "far/stencil_table.h"
 #include "far/topology.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace quadtri {
 
 class SchaeferWarrenMasks {
 public:
     SchaeferWarrenMasks(const Topology& topology, SparseAccumulator& accumulator);
+
+    // Whether a child's mask reads an unzipped copy: only then does it differ from Stam-Loop's
+    // (which is cheaper to build), i.e. when a face around it has a vertex on the network.
+    bool touchesFace(int face) const { return faceTouches_[face] != 0; }
+    bool touchesEdge(int edge) const;
+    bool touchesVertex(int vertex) const;
 
     void facePoint(int face, double scale);
     void edgePoint(int edge, double scale);      // smooth rule of an edge with two faces
@@ -37,6 +46,7 @@ private:
     const Topology& t_;
     SparseAccumulator& acc_;
     StencilTableD triangleCopies_, quadCopies_;
+    std::vector<uint8_t> faceTouches_;  // per face: one of its vertices has network edges
 };
 
 }  // namespace quadtri

@@ -1,0 +1,20 @@
+// Threaded evaluator: the kernel of kernels/stencil_kernel.h over blocks of stencils, scheduled by
+// oneTBB in the caller's task arena (its thread count); no global state.
+#pragma once
+
+#include "far/stencil_table.h"
+#include "osd/buffer_descriptor.h"
+
+namespace quadtri {
+
+class TbbEvaluator {
+public:
+    // Same contract as CpuEvaluator::EvalStencils: stencils [start, end) (end < 0: all), stencil i
+    // writes destination element i, src and dst must not overlap, std::invalid_argument on bad
+    // descriptors or ranges. Results are bit-identical to CpuEvaluator's.
+    static void EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                             const BufferDescriptor& dstDesc, const StencilTable& table, int start = 0,
+                             int end = -1);
+};
+
+}  // namespace quadtri
