@@ -1,0 +1,49 @@
+// What the bench measures per case, and for the whole run; written out by report.cpp.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace quadtri::bench {
+
+struct QuadtriFigures {
+    double buildMs = 0;                     // Refiner construction + refineUniform(level)
+    std::size_t tableBytes = 0;             // sum of the per-level tables' bytes()
+    double evalSerialMs = 0;                // CpuEvaluator, level by level
+    std::optional<double> evalThreadedMs;   // TbbEvaluator, level by level
+    std::optional<double> evalVulkanMs;     // not built yet
+    // Table arrays read + distinct source vertices read + output vertices written, all levels.
+    double compulsoryBytes = 0;
+};
+
+struct OsdFigures {
+    double buildMsPerLevel = 0;      // refiner + RefineUniform + StencilTableFactory (intermediate levels)
+    double buildMsFactorized = 0;    // the same, last level factorized over the control vertices
+    double evalCpuPerLevelMs = 0;    // Osd::CpuEvaluator on the per-level table (one call)
+    double evalCpuFactorizedMs = 0;  // Osd::CpuEvaluator on the factorized table
+    double evalOmpMs = 0;            // Osd::OmpEvaluator on the per-level table, level by level
+    std::size_t tableBytes = 0;      // per-level table: sizes, offsets, indices, weights
+    std::size_t tableBytesFactorized = 0;
+    double bestEvalMs() const { return std::min({evalCpuPerLevelMs, evalCpuFactorizedMs, evalOmpMs}); }
+};
+
+struct CaseResult {
+    std::string mesh;
+    std::string scheme;
+    int level = 0;
+    int refinedVertices = 0;  // vertices of the last level
+    QuadtriFigures quadtri;
+    std::optional<OsdFigures> osd;
+};
+
+struct BenchResult {
+    std::size_t memcpyBytes = 0;  // buffer size of the memcpy runs
+    double memcpyGbps1 = 0;
+    double memcpyGbps2 = 0;
+    std::vector<CaseResult> cases;
+};
+
+}  // namespace quadtri::bench

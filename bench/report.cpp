@@ -1,0 +1,102 @@
+#include "bench/report.h"
+
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+
+namespace quadtri::bench {
+
+namespace {
+
+std::string number(double v, const char* format = "%.6g") {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+std::string json(std::optional<double> v) { return v ? number(*v) : "null"; }
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+// Milliseconds, bytes and ratios with about three significant digits.
+std::string ms(double v) { return number(v, v >= 100 ? "%.0f" : v >= 10 ? "%.1f" : v >= 1 ? "%.2f" : "%.3f"); }
+std::string ms(std::optional<double> v) { return v ? ms(*v) : "–"; }
+std::string mib(std::size_t bytes) { return ms(double(bytes) / (1 << 20)); }
+std::string ratio(double num, double den) { return den > 0 ? number(num / den, "%.2f") : "–"; }
+std::string ratio(double num, std::optional<double> den) { return den ? ratio(num, *den) : "–"; }
+
+}  // namespace
+
+void writeJson(const std::string& path, const BenchResult& r) {
+    std::ofstream f(path);
+    if (!f) throw std::runtime_error("cannot write " + path);
+    f << "{\n  \"memcpy_gbps_1t\": " << number(r.memcpyGbps1) << ",\n  \"memcpy_gbps_2t\": " << number(r.memcpyGbps2)
+      << ",\n  \"cases\": [";
+    for (size_t i = 0; i < r.cases.size(); ++i) {
+        const CaseResult& c = r.cases[i];
+        const QuadtriFigures& q = c.quadtri;
+        f << (i ? ",\n" : "\n") << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme)
+          << ", \"level\": " << c.level << ", \"refined_vertices\": " << c.refinedVertices << ",\n"
+          << "     \"quadtri\": {\"build_ms\": " << number(q.buildMs) << ", \"table_bytes\": " << q.tableBytes
+          << ", \"eval_serial_ms\": " << number(q.evalSerialMs) << ", \"eval_threaded_ms\": " << json(q.evalThreadedMs)
+          << ", \"eval_vulkan_ms\": " << json(q.evalVulkanMs) << "},\n     \"osd\": ";
+        if (!c.osd) {
+            f << "{\"build_ms_per_level\": null, \"build_ms_factorized\": null, \"eval_cpu_per_level_ms\": null, "
+                 "\"eval_cpu_factorized_ms\": null, \"eval_omp_ms\": null, \"table_bytes\": null}}";
+            continue;
+        }
+        const OsdFigures& o = *c.osd;
+        f << "{\"build_ms_per_level\": " << number(o.buildMsPerLevel)
+          << ", \"build_ms_factorized\": " << number(o.buildMsFactorized)
+          << ", \"eval_cpu_per_level_ms\": " << number(o.evalCpuPerLevelMs)
+          << ", \"eval_cpu_factorized_ms\": " << number(o.evalCpuFactorizedMs)
+          << ", \"eval_omp_ms\": " << number(o.evalOmpMs) << ", \"table_bytes\": " << o.tableBytes << "}}";
+    }
+    f << "\n  ]\n}\n";
+    if (!f) throw std::runtime_error("cannot write " + path);
+}
+
+void printMarkdown(std::ostream& out, const BenchResult& r) {
+    const char* threaded = "TBB";
+    out << "| mesh | scheme | L | vertices | qt build ms | OSD build ms (per-level / fact.) | build OSD/qt"
+        << " | qt MiB | OSD MiB (per-level / fact.) | bytes qt/OSD | qt serial ms | qt " << threaded << " ms"
+        << " | OSD CPU ms (per-level / fact.) | OSD OMP ms | eval OSD best/qt serial | eval OSD best/qt " << threaded
+        << " | qt " << threaded << " / memcpy-2t |\n";
+    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const CaseResult& c : r.cases) {
+        const QuadtriFigures& q = c.quadtri;
+        std::string bandwidth = "–";
+        if (q.evalThreadedMs && *q.evalThreadedMs > 0 && r.memcpyGbps2 > 0)
+            bandwidth = number(100.0 * q.compulsoryBytes / (*q.evalThreadedMs * 1e6) / r.memcpyGbps2, "%.0f%%");
+        out << "| " << c.mesh << " | " << c.scheme << " | " << c.level << " | " << c.refinedVertices << " | "
+            << ms(q.buildMs) << " | ";
+        if (c.osd) {
+            const OsdFigures& o = *c.osd;
+            out << ms(o.buildMsPerLevel) << " / " << ms(o.buildMsFactorized) << " | " << ratio(o.buildMsPerLevel, q.buildMs)
+                << " | " << mib(q.tableBytes) << " | " << mib(o.tableBytes) << " / " << mib(o.tableBytesFactorized)
+                << " | " << ratio(double(q.tableBytes), double(o.tableBytes)) << " | " << ms(q.evalSerialMs) << " | "
+                << ms(q.evalThreadedMs) << " | " << ms(o.evalCpuPerLevelMs) << " / " << ms(o.evalCpuFactorizedMs)
+                << " | " << ms(o.evalOmpMs) << " | " << ratio(o.bestEvalMs(), q.evalSerialMs) << " | "
+                << ratio(o.bestEvalMs(), q.evalThreadedMs);
+        } else {
+            out << "– | – | " << mib(q.tableBytes) << " | – | – | " << ms(q.evalSerialMs) << " | "
+                << ms(q.evalThreadedMs) << " | – | – | – | –";
+        }
+        out << " | " << bandwidth << " |\n";
+    }
+    out << "\nmemcpy (" << (r.memcpyBytes >> 20) << " MiB, bytes read + written): " << number(r.memcpyGbps1, "%.1f")
+        << " GB/s with 1 thread, " << number(r.memcpyGbps2, "%.1f") << " GB/s with 2 threads\n"
+        << "Last column: the threaded evaluation's compulsory bytes (all levels' table arrays, distinct source "
+           "vertices and output vertices, 12 bytes each) per second, over the 2-thread memcpy bandwidth; above "
+           "100% where the working set stays in cache.\n";
+}
+
+}  // namespace quadtri::bench
