@@ -43,7 +43,7 @@ void Refiner::refineUniform(int maxLevel) {
                                 std::to_string(options_.memoryBudgetBytes) + " bytes (Options::memoryBudgetBytes)");
         const Topology& parent = levels_.back();
         const ChildNumbering numbering = numberChildren(parent);
-        levelTables_.push_back(toFloatTable(buildLevelStencils(parent, numbering, options_)));
+        levelTables_.push_back(buildLevelStencils<StencilTable>(parent, numbering, options_));
         levels_.push_back(refineTopology(parent, numbering, options_.creaseMethod));
     }
 }

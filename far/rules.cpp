@@ -126,9 +126,10 @@ float childSharpnessAt(const Topology& t, const std::vector<float>& childEdgeSha
 
 }  // namespace
 
-StencilTableD buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options) {
+template <typename Table>
+Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options) {
     const int numChildren = num.numFacePoints + t.numEdges() + t.numVertices;
-    StencilTableD table;
+    Table table;
     table.numSourceVertices = t.numVertices;
     table.sizes.reserve(numChildren);
     table.offsets.reserve(numChildren);
@@ -208,5 +209,8 @@ StencilTableD buildLevelStencils(const Topology& t, const ChildNumbering& num, c
     }
     return table;
 }
+
+template StencilTable buildLevelStencils<StencilTable>(const Topology&, const ChildNumbering&, const Options&);
+template StencilTableD buildLevelStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&);
 
 }  // namespace quadtri

@@ -298,7 +298,7 @@ std::vector<double> applyTable(const StencilTableD& table, const std::vector<dou
 // Level L (>= 1) of the refiner's topology as a double table built by the analyzer's builder.
 StencilTableD doubleLevelTable(const Refiner& refiner, int L) {
     const Topology& parent = refiner.level(L - 1);
-    return buildLevelStencils(parent, numberChildren(parent), refiner.options());
+    return buildLevelStencils<StencilTableD>(parent, numberChildren(parent), refiner.options());
 }
 
 // Graph distance of every vertex from a seed set, over the edges of `t`.
