@@ -123,3 +123,18 @@ run(2 frobnicate "${CYLINDER}")
 run(2)
 
 message(STATUS "cli tests passed")
+
+# The evaluators write the same mesh (Vulkan falls back to the CPU, saying so, without a device).
+foreach(evaluator cpu tbb vulkan)
+  run(0 refine "${CYLINDER}" --level 2 --evaluator ${evaluator} -o "${WORK}/cyl_${evaluator}.obj")
+endforeach()
+foreach(evaluator tbb vulkan)
+  file(STRINGS "${WORK}/cyl_cpu.obj" cpuLines REGEX "^v ")
+  file(STRINGS "${WORK}/cyl_${evaluator}.obj" otherLines REGEX "^v ")
+  list(LENGTH cpuLines cpuCount)
+  list(LENGTH otherLines otherCount)
+  if(NOT cpuCount EQUAL otherCount OR cpuCount EQUAL 0)
+    message(FATAL_ERROR "--evaluator ${evaluator}: ${otherCount} vertices, cpu ${cpuCount}")
+  endif()
+endforeach()
+run(2 refine "${CYLINDER}" --level 1 --evaluator gpu -o "${WORK}/x.obj")

@@ -40,15 +40,6 @@ Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     return options;
 }
 
-// Positions of level L evaluated from the control vertices with `table` (level 0: the input).
-std::vector<float> evaluate(const StencilTable* table, const io::ObjMesh& mesh) {
-    if (!table) return mesh.positions;
-    std::vector<float> out(size_t(table->numStencils()) * 3);
-    CpuEvaluator::EvalStencils(mesh.positions.data(), BufferDescriptor(0, 3, 3), out.data(),
-                               BufferDescriptor(0, 3, 3), *table);
-    return out;
-}
-
 int outputFaces(const Topology& t) {
     return t.numFaces() - int(std::count_if(t.faceHole.begin(), t.faceHole.end(), [](uint8_t h) { return h != 0; }));
 }
@@ -117,7 +108,8 @@ int runRefine(const RefineArgs& args) {
     refiner.refineUniform(args.level);
     StencilTable table;
     if (args.level > 0) table = refiner.factorizedStencils(args.level);
-    std::vector<float> positions = evaluate(args.level > 0 ? &table : nullptr, mesh);
+    std::vector<float> positions =
+        args.level > 0 ? evaluatePositions(args.evaluator, table, mesh.positions) : mesh.positions;
     const Topology& top = refiner.level(args.level);
     io::writeObj(args.output, positions.data(), top);
     std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,

@@ -4,8 +4,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "far/options.h"
+#include "far/stencil_table.h"
 
 namespace quadtri::cli {
 
@@ -20,11 +22,19 @@ struct MeshArgs {
 // Largest refinement level accepted on the command line (the memory budget may refuse less).
 constexpr int kMaxLevel = 10;
 
+// Which evaluator applies the stencils (`refine --evaluator`).
+enum class EvaluatorKind { Cpu, Tbb, Vulkan };
+
 struct RefineArgs {
     MeshArgs mesh;
     int level = 1;
     std::string output;
+    EvaluatorKind evaluator = EvaluatorKind::Cpu;
 };
+
+// 3-float positions through `table` with the chosen evaluator. Vulkan without a usable device
+// falls back to the CPU evaluator, saying so on stderr.
+std::vector<float> evaluatePositions(EvaluatorKind kind, const StencilTable& table, const std::vector<float>& control);
 
 struct InfoArgs {
     MeshArgs mesh;

@@ -66,6 +66,12 @@ int main(int argc, char** argv) {
     addMeshFlags(*refineCmd, refine.mesh);
     addLevel(*refineCmd, "--level,-l", refine.level, "Refinement level")->required();
     refineCmd->add_option("-o,--output", refine.output, "Output OBJ file")->required();
+    static const std::map<std::string, cli::EvaluatorKind> evaluators{
+        {"cpu", cli::EvaluatorKind::Cpu}, {"tbb", cli::EvaluatorKind::Tbb}, {"vulkan", cli::EvaluatorKind::Vulkan}};
+    refineCmd->add_option_function<std::string>(
+            "--evaluator", [&refine](const std::string& s) { refine.evaluator = evaluators.at(s); },
+            "Stencil evaluator: cpu, tbb (threads) or vulkan (falls back to cpu without a device; default cpu)")
+        ->check(oneOf(evaluators, "evaluator"));
 
     cli::InfoArgs info;
     CLI::App* infoCmd = app.add_subcommand("info", "Print topology statistics and table sizes per level");

@@ -1,0 +1,51 @@
+#include "osd/vulkan_buffer.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace quadtri {
+
+VulkanVertexBuffer VulkanVertexBuffer::create(VulkanContext& ctx, int numElements, int stride) {
+    if (numElements < 0 || stride <= 0)
+        throw std::invalid_argument("VulkanVertexBuffer: need numElements >= 0 and stride > 0, got " +
+                                    std::to_string(numElements) + " and " + std::to_string(stride));
+    return VulkanVertexBuffer(ctx, numElements, stride);
+}
+
+VulkanVertexBuffer::VulkanVertexBuffer(VulkanContext& ctx, int numElements, int stride)
+    : ctx_(&ctx), numElements_(numElements), stride_(stride),
+      buffer_(ctx, numFloats() * sizeof(float),
+              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
+                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) {
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        vkCmdFillBuffer(cmd, buffer_.buffer(), 0, VK_WHOLE_SIZE, 0);
+        auto barrier = detail::vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+        barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
+                                VK_ACCESS_TRANSFER_WRITE_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0,
+                             nullptr, 0, nullptr);
+    });
+}
+
+void VulkanVertexBuffer::updateData(const float* src, int start, int count) {
+    if (start < 0 || count < 0 || start + count > numElements_)
+        throw std::invalid_argument("VulkanVertexBuffer::updateData: elements [" + std::to_string(start) + ", " +
+                                    std::to_string(start + count) + ") outside the buffer's " +
+                                    std::to_string(numElements_));
+    if (count == 0) return;
+    if (!src) throw std::invalid_argument("VulkanVertexBuffer::updateData: null source");
+    const VkDeviceSize elementBytes = VkDeviceSize(stride_) * sizeof(float);
+    detail::upload(*ctx_, {{buffer_.buffer(), VkDeviceSize(start) * elementBytes, src, nullptr,
+                            VkDeviceSize(count) * elementBytes}});
+}
+
+void VulkanVertexBuffer::readBack(float* dst) const {
+    if (numFloats() == 0) return;
+    if (!dst) throw std::invalid_argument("VulkanVertexBuffer::readBack: null destination");
+    detail::download(*ctx_, {{buffer_.buffer(), 0, nullptr, dst, numFloats() * sizeof(float)}});
+}
+
+}  // namespace quadtri

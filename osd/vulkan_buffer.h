@@ -1,0 +1,35 @@
+// Per-vertex float data in a device-local Vulkan storage buffer: numElements elements of
+// `stride` floats each (element i at floats [i*stride, (i+1)*stride)).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include "osd/vulkan_context.h"
+#include "osd/vulkan_memory.h"
+
+namespace quadtri {
+
+class VulkanVertexBuffer {
+public:
+    // Zero-filled. Usable as a storage buffer, a vertex buffer and a transfer source/target.
+    static VulkanVertexBuffer create(VulkanContext& ctx, int numElements, int stride);
+
+    // Copies `count` elements (count*stride floats) from host memory into elements
+    // [start, start+count). Waits for the copy. std::invalid_argument when out of range.
+    void updateData(const float* src, int start, int count);
+    // Copies every element (numElements*stride floats) into host memory. Waits.
+    void readBack(float* dst) const;
+
+    VkBuffer buffer() const { return buffer_.buffer(); }
+    int numElements() const { return numElements_; }
+    int stride() const { return stride_; }
+    std::size_t numFloats() const { return std::size_t(numElements_) * std::size_t(stride_); }
+
+private:
+    VulkanVertexBuffer(VulkanContext& ctx, int numElements, int stride);
+    VulkanContext* ctx_;
+    int numElements_, stride_;
+    detail::DeviceBuffer buffer_;
+};
+
+}  // namespace quadtri

@@ -1,0 +1,256 @@
+#include "osd/vulkan_context.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace quadtri {
+
+namespace shaders {
+extern const uint32_t stencil_eval_comp[];
+extern const std::size_t stencil_eval_comp_words;
+}  // namespace shaders
+
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr uint32_t kNumBindings = 6;  // sizes, offsets, indices, weights, src, dst
+constexpr uint32_t kPushConstantBytes = 4 * sizeof(uint32_t);
+
+bool envFlag(const char* name) {
+    const char* v = std::getenv(name);
+    return v && *v && std::strcmp(v, "0") != 0;
+}
+
+bool hasLayer(const char* name) {
+    uint32_t n = 0;
+    if (vkEnumerateInstanceLayerProperties(&n, nullptr) != VK_SUCCESS) return false;
+    std::vector<VkLayerProperties> layers(n);
+    if (vkEnumerateInstanceLayerProperties(&n, layers.data()) != VK_SUCCESS) return false;
+    for (const auto& l : layers)
+        if (std::strcmp(l.layerName, name) == 0) return true;
+    return false;
+}
+
+std::atomic<int>& totalMessages() {
+    static std::atomic<int> count{0};
+    return count;
+}
+
+}  // namespace
+
+int VulkanContext::totalValidationMessageCount() { return totalMessages().load(); }
+
+VKAPI_ATTR VkBool32 VKAPI_CALL VulkanContext::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                        VkDebugUtilsMessageTypeFlagsEXT types,
+                                                        const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    // Every message is printed; the layer's findings are counted, not the loader's own
+    // (general) messages such as a missing driver.
+    if (types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT)) {
+        static_cast<VulkanContext*>(user)->validationMessages_.fetch_add(1);
+        totalMessages().fetch_add(1);
+    }
+    std::fprintf(stderr, "quadtri: Vulkan validation %s: %s\n",
+                 severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning",
+                 data && data->pMessage ? data->pMessage : "(no message)");
+    return VK_FALSE;
+}
+
+VulkanContext::VulkanContext() {
+    try {
+        createInstance();
+        pickDevice();
+        createDevice();
+        createShared();
+    } catch (...) {
+        destroy();
+        throw;
+    }
+}
+
+VulkanContext::VulkanContext(const External& e)
+    : instance_(e.instance), physicalDevice_(e.physicalDevice), device_(e.device), queue_(e.queue),
+      queueFamily_(e.queueFamilyIndex) {
+    if (!e.instance || !e.physicalDevice || !e.device || !e.queue)
+        throw std::invalid_argument("VulkanContext: External needs an instance, physical device, device and queue");
+    vkGetPhysicalDeviceProperties(physicalDevice_, &properties_);
+    vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memory_);
+    try {
+        createShared();
+    } catch (...) {
+        destroy();
+        throw;
+    }
+}
+
+VulkanContext::~VulkanContext() { destroy(); }
+
+void VulkanContext::createInstance() {
+    auto app = detail::vkStruct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
+    app.pApplicationName = "quadtri";
+    app.pEngineName = "quadtri";
+    app.apiVersion = VK_API_VERSION_1_1;
+
+    const bool validation = envFlag("QUADTRI_VK_VALIDATION") && hasLayer(kValidationLayer);
+    if (envFlag("QUADTRI_VK_VALIDATION") && !validation)
+        std::fprintf(stderr, "quadtri: QUADTRI_VK_VALIDATION is set but %s is not installed\n", kValidationLayer);
+    const char* layers[] = {kValidationLayer};
+    const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+
+    auto msg = detail::vkStruct<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+    msg.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    msg.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    msg.pfnUserCallback = &VulkanContext::onMessage;
+    msg.pUserData = this;
+
+    auto info = detail::vkStruct<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
+    info.pApplicationInfo = &app;
+    if (validation) {
+        info.pNext = &msg;  // also covers vkCreateInstance / vkDestroyInstance themselves
+        info.enabledLayerCount = 1;
+        info.ppEnabledLayerNames = layers;
+        info.enabledExtensionCount = 1;
+        info.ppEnabledExtensionNames = extensions;
+    }
+    const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
+        throw VulkanError("no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); install one, "
+                          "e.g. Debian's mesa-vulkan-drivers for the lavapipe CPU driver", r);
+    vkCheck(r, "vkCreateInstance");
+    ownsInstance_ = true;
+    if (validation) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+        if (!create) throw VulkanError("vkCreateDebugUtilsMessengerEXT not available");
+        vkCheck(create(instance_, &msg, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
+    }
+}
+
+void VulkanContext::createDevice() {
+    const float priority = 1.0f;
+    auto q = detail::vkStruct<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
+    q.queueFamilyIndex = queueFamily_;
+    q.queueCount = 1;
+    q.pQueuePriorities = &priority;
+    auto info = detail::vkStruct<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &q;
+    vkCheck(vkCreateDevice(physicalDevice_, &info, nullptr, &device_), "vkCreateDevice");
+    ownsDevice_ = true;
+    vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+}
+
+void VulkanContext::createShared() {
+    auto pool = detail::vkStruct<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+    pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pool.queueFamilyIndex = queueFamily_;
+    vkCheck(vkCreateCommandPool(device_, &pool, nullptr, &commandPool_), "vkCreateCommandPool");
+
+    auto sm = detail::vkStruct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    sm.codeSize = shaders::stencil_eval_comp_words * sizeof(uint32_t);
+    sm.pCode = shaders::stencil_eval_comp;
+    vkCheck(vkCreateShaderModule(device_, &sm, nullptr, &shader_), "vkCreateShaderModule");
+
+    VkDescriptorSetLayoutBinding bindings[kNumBindings];
+    for (uint32_t b = 0; b < kNumBindings; ++b)
+        bindings[b] = VkDescriptorSetLayoutBinding{b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    auto sl = detail::vkStruct<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    sl.bindingCount = kNumBindings;
+    sl.pBindings = bindings;
+    vkCheck(vkCreateDescriptorSetLayout(device_, &sl, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
+
+    VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, kPushConstantBytes};
+    auto pl = detail::vkStruct<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+    pl.setLayoutCount = 1;
+    pl.pSetLayouts = &setLayout_;
+    pl.pushConstantRangeCount = 1;
+    pl.pPushConstantRanges = &push;
+    vkCheck(vkCreatePipelineLayout(device_, &pl, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
+    workgroupSize_ = std::min<uint32_t>(64, properties_.limits.maxComputeWorkGroupSize[0]);
+}
+
+VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStride) {
+    for (const auto& p : pipelines_)
+        if (p.length == length && p.srcStride == srcStride && p.dstStride == dstStride) return p.pipeline;
+    const int32_t values[4] = {int32_t(workgroupSize_), length, srcStride, dstStride};
+    VkSpecializationMapEntry entries[4];
+    for (uint32_t i = 0; i < 4; ++i) entries[i] = VkSpecializationMapEntry{i, uint32_t(i * sizeof(int32_t)), sizeof(int32_t)};
+    VkSpecializationInfo spec{4, entries, sizeof(values), values};
+    auto info = detail::vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    info.stage = detail::vkStruct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = shader_;
+    info.stage.pName = "main";
+    info.stage.pSpecializationInfo = &spec;
+    info.layout = pipelineLayout_;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vkCheck(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateComputePipelines");
+    pipelines_.push_back({length, srcStride, dstStride, pipeline});
+    return pipeline;
+}
+
+uint32_t VulkanContext::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const {
+    for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i)
+        if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & required) == required) return i;
+    throw VulkanError("no Vulkan memory type with properties " + std::to_string(required));
+}
+
+void VulkanContext::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+    auto ai = detail::vkStruct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+    ai.commandPool = commandPool_;
+    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ai.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    vkCheck(vkAllocateCommandBuffers(device_, &ai, &cmd), "vkAllocateCommandBuffers");
+    VkFence fence = VK_NULL_HANDLE;
+    auto release = [&] {
+        if (fence) vkDestroyFence(device_, fence, nullptr);
+        vkFreeCommandBuffers(device_, commandPool_, 1, &cmd);
+    };
+    try {
+        auto bi = detail::vkStruct<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        vkCheck(vkBeginCommandBuffer(cmd, &bi), "vkBeginCommandBuffer");
+        record(cmd);
+        vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+        auto fi = detail::vkStruct<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
+        vkCheck(vkCreateFence(device_, &fi, nullptr, &fence), "vkCreateFence");
+        auto si = detail::vkStruct<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+        si.commandBufferCount = 1;
+        si.pCommandBuffers = &cmd;
+        vkCheck(vkQueueSubmit(queue_, 1, &si, fence), "vkQueueSubmit");
+        vkCheck(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    } catch (...) {
+        release();
+        throw;
+    }
+    release();
+}
+
+void VulkanContext::destroy() noexcept {
+    if (device_) {
+        for (const auto& p : pipelines_) vkDestroyPipeline(device_, p.pipeline, nullptr);
+        pipelines_.clear();
+        if (pipelineLayout_) vkDestroyPipelineLayout(device_, pipelineLayout_, nullptr);
+        if (setLayout_) vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
+        if (shader_) vkDestroyShaderModule(device_, shader_, nullptr);
+        if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
+        pipelineLayout_ = VK_NULL_HANDLE, setLayout_ = VK_NULL_HANDLE, shader_ = VK_NULL_HANDLE, commandPool_ = VK_NULL_HANDLE;
+        if (ownsDevice_) vkDestroyDevice(device_, nullptr);
+    }
+    device_ = VK_NULL_HANDLE;
+    if (instance_ && ownsInstance_) {
+        if (messenger_) {
+            auto destroyMessenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+                vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+            if (destroyMessenger) destroyMessenger(instance_, messenger_, nullptr);
+            messenger_ = VK_NULL_HANDLE;
+        }
+        vkDestroyInstance(instance_, nullptr);
+    }
+    instance_ = VK_NULL_HANDLE;
+}
+
+}  // namespace quadtri

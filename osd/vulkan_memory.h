@@ -1,0 +1,53 @@
+// Internal helpers of the Vulkan evaluator: an owning VkBuffer + VkDeviceMemory, and copies
+// between host memory and device buffers through a staging buffer.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <vector>
+
+#include "osd/vulkan_context.h"
+
+namespace quadtri::detail {
+
+class DeviceBuffer {
+public:
+    DeviceBuffer() = default;
+    // size 0 is rounded up to 4 bytes (Vulkan has no empty buffers).
+    DeviceBuffer(VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags properties);
+    ~DeviceBuffer() { reset(); }
+    DeviceBuffer(DeviceBuffer&& other) noexcept { *this = std::move(other); }
+    DeviceBuffer& operator=(DeviceBuffer&& other) noexcept;
+    DeviceBuffer(const DeviceBuffer&) = delete;
+    DeviceBuffer& operator=(const DeviceBuffer&) = delete;
+
+    VkBuffer buffer() const { return buffer_; }
+    VkDeviceSize size() const { return size_; }
+    // Host pointer to the whole buffer (host-visible memory only); mapped on first call.
+    void* map();
+    void reset() noexcept;
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize size_ = 0;
+    void* mapped_ = nullptr;
+};
+
+// One host <-> device copy: `bytes` bytes between host memory and buffer at byte `offset`.
+struct CopyRegion {
+    VkBuffer buffer;
+    VkDeviceSize offset;
+    const void* source;  // upload: host data
+    void* target;        // download: host destination
+    VkDeviceSize bytes;
+};
+
+// Uploads every region's `source` (one staging buffer, one submission, waited on) and makes the
+// writes visible to later compute-shader and transfer reads.
+void upload(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
+// Copies every region into its `target`, waiting for the device.
+void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
+
+}  // namespace quadtri::detail

@@ -1,0 +1,31 @@
+// A StencilTable uploaded once to device-local storage buffers, for VulkanEvaluator.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include "far/stencil_table.h"
+#include "osd/vulkan_context.h"
+#include "osd/vulkan_memory.h"
+
+namespace quadtri {
+
+class VulkanStencilTable {
+public:
+    // Copies the table's four arrays to device-local buffers through one staging buffer (waits).
+    VulkanStencilTable(VulkanContext& ctx, const StencilTable& table);
+
+    int numStencils() const { return numStencils_; }
+    int numSourceVertices() const { return numSourceVertices_; }
+    VkBuffer sizes() const { return sizes_.buffer(); }
+    VkBuffer offsets() const { return offsets_.buffer(); }
+    VkBuffer indices() const { return indices_.buffer(); }
+    VkBuffer weights() const { return weights_.buffer(); }
+    VkDevice device() const { return device_; }
+
+private:
+    VkDevice device_;
+    int numStencils_ = 0, numSourceVertices_ = 0;
+    detail::DeviceBuffer sizes_, offsets_, indices_, weights_;
+};
+
+}  // namespace quadtri
