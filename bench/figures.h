@@ -14,7 +14,8 @@ struct QuadtriFigures {
     std::size_t tableBytes = 0;             // sum of the per-level tables' bytes()
     double evalSerialMs = 0;                // CpuEvaluator, level by level
     std::optional<double> evalThreadedMs;   // TbbEvaluator, level by level
-    std::optional<double> evalVulkanMs;     // not built yet
+    std::optional<double> evalVulkanMs;     // VulkanEvaluator over every level, submit to fence (no device: absent)
+    std::optional<double> uploadVulkanMs;   // the per-level tables and the control positions
     // Table arrays read + distinct source vertices read + output vertices written, all levels.
     double compulsoryBytes = 0;
 };

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,7 @@
 #include "bench/quadtri_case.h"
 #include "bench/report.h"
 #include "bench/torus.h"
+#include "bench/vulkan_case.h"
 
 namespace quadtri::bench {
 namespace {
@@ -52,7 +54,7 @@ std::string schemeName(TorusFaces faces) {
     return qt;
 }
 
-CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps) {
+CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, VulkanContext* vulkan) {
     CaseResult result;
     result.mesh = mesh.name;
     result.scheme = schemeName(spec.faces);
@@ -75,6 +77,12 @@ CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps) {
         std::cerr << "  agree with OpenSubdiv: " << match.describe() << "\n";
     }
     result.quadtri = qt.measure(reps);
+    if (vulkan) {
+        const VulkanFigures v = measureVulkan(*vulkan, qt.refiner(), mesh.positions, qt.lastLevel(),
+                                              1e-5 * mesh.boundingBoxDiagonal(), reps);
+        result.quadtri.evalVulkanMs = v.evalMs;
+        result.quadtri.uploadVulkanMs = v.uploadMs;
+    }
     if (osd) result.osd = osd->measure(reps);
     return result;
 }
@@ -105,6 +113,14 @@ int run(int argc, char** argv) {
     result.memcpyGbps1 = memcpyGbps(result.memcpyBytes, 1, 5);
     result.memcpyGbps2 = memcpyGbps(result.memcpyBytes, 2, 5);
 
+    std::unique_ptr<VulkanContext> vulkan;
+    try {
+        vulkan = std::make_unique<VulkanContext>();
+        std::cerr << "Vulkan device: " << vulkan->deviceName() << "\n";
+    } catch (const VulkanError& e) {
+        std::cerr << "no Vulkan timings: " << e.what() << "\n";
+    }
+
     std::map<std::pair<int, TorusFaces>, ControlMesh> meshes;
     const std::vector<CaseSpec> cases = caseList(quick);
     for (size_t i = 0; i < cases.size(); ++i) {
@@ -113,7 +129,7 @@ int run(int argc, char** argv) {
         if (!meshes.count(key)) meshes.emplace(key, makeTorus(spec.n, spec.faces));
         const ControlMesh& mesh = meshes.at(key);
         std::cerr << "[" << i + 1 << "/" << cases.size() << "] " << mesh.name << " level " << spec.level << "\n";
-        result.cases.push_back(runCase(mesh, spec, reps));
+        result.cases.push_back(runCase(mesh, spec, reps, vulkan.get()));
     }
 
     printMarkdown(std::cout, result);

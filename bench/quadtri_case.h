@@ -24,6 +24,7 @@ public:
     // Last-level positions of the serial evaluation (after prepare()).
     const std::vector<float>& lastLevel() const { return serial_.back(); }
     int refinedVertices() const { return int(serial_.back().size() / 3); }
+    const Refiner& refiner() const { return *refiner_; }
 
     // Medians of `reps` timed runs after a warm-up (the build's warm-up is prepare()).
     QuadtriFigures measure(int reps);

@@ -47,7 +47,8 @@ void writeJson(const std::string& path, const BenchResult& r) {
           << ", \"level\": " << c.level << ", \"refined_vertices\": " << c.refinedVertices << ",\n"
           << "     \"quadtri\": {\"build_ms\": " << number(q.buildMs) << ", \"table_bytes\": " << q.tableBytes
           << ", \"eval_serial_ms\": " << number(q.evalSerialMs) << ", \"eval_threaded_ms\": " << json(q.evalThreadedMs)
-          << ", \"eval_vulkan_ms\": " << json(q.evalVulkanMs) << "},\n     \"osd\": ";
+          << ", \"eval_vulkan_ms\": " << json(q.evalVulkanMs) << ", \"upload_vulkan_ms\": " << json(q.uploadVulkanMs)
+          << "},\n     \"osd\": ";
         if (!c.osd) {
             f << "{\"build_ms_per_level\": null, \"build_ms_factorized\": null, \"eval_cpu_per_level_ms\": null, "
                  "\"eval_cpu_factorized_ms\": null, \"eval_omp_ms\": null, \"table_bytes\": null}}";
@@ -69,8 +70,8 @@ void printMarkdown(std::ostream& out, const BenchResult& r) {
     out << "| mesh | scheme | L | vertices | qt build ms | OSD build ms (per-level / fact.) | build OSD/qt"
         << " | qt MiB | OSD MiB (per-level / fact.) | bytes qt/OSD | qt serial ms | qt " << threaded << " ms"
         << " | OSD CPU ms (per-level / fact.) | OSD OMP ms | eval OSD best/qt serial | eval OSD best/qt " << threaded
-        << " | qt " << threaded << " / memcpy-2t |\n";
-    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        << " | qt " << threaded << " / memcpy-2t | qt Vulkan eval / upload ms |\n";
+    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const CaseResult& c : r.cases) {
         const QuadtriFigures& q = c.quadtri;
         std::string bandwidth = "–";
@@ -90,7 +91,7 @@ void printMarkdown(std::ostream& out, const BenchResult& r) {
             out << "– | – | " << mib(q.tableBytes) << " | – | – | " << ms(q.evalSerialMs) << " | "
                 << ms(q.evalThreadedMs) << " | – | – | – | –";
         }
-        out << " | " << bandwidth << " |\n";
+        out << " | " << bandwidth << " | " << ms(q.evalVulkanMs) << " / " << ms(q.uploadVulkanMs) << " |\n";
     }
     out << "\nmemcpy (" << (r.memcpyBytes >> 20) << " MiB, bytes read + written): " << number(r.memcpyGbps1, "%.1f")
         << " GB/s with 1 thread, " << number(r.memcpyGbps2, "%.1f") << " GB/s with 2 threads\n"

@@ -10,6 +10,7 @@
 
 #include "far/refiner.h"
 #include "osd/cpu_evaluator.h"
+#include "osd/vulkan_context.h"
 #include "tools/obj_io.h"
 
 namespace quadtri::cli {
@@ -147,8 +148,9 @@ int runDemo(const DemoArgs& args) {
     std::filesystem::create_directories(args.outDir);
     const std::string stem = std::filesystem::path(args.mesh.input).stem().string();
 
-    std::printf("| level | vertices | faces | stencils | table bytes | analyzer ms | eval ms |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+    const std::unique_ptr<VulkanContext> vulkan = openVulkan();
+    std::printf("| level | vertices | faces | stencils | table bytes | analyzer ms | eval ms | vulkan eval ms |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int L = 1; L <= args.levels; ++L) {
         auto start = std::chrono::steady_clock::now();
         Refiner refiner = makeRefiner(mesh, options);
@@ -167,8 +169,10 @@ int runDemo(const DemoArgs& args) {
         std::nth_element(evalMs.begin(), evalMs.begin() + 3, evalMs.end());
 
         const Topology& t = refiner.level(L);
-        std::printf("| %d | %d | %d | %d | %zu | %.3f | %.3f |\n", L, t.numVertices, outputFaces(t), table.numStencils(),
-                    table.bytes(), analyzerMs, evalMs[3]);
+        char vulkanMs[32] = "-";
+        if (vulkan) std::snprintf(vulkanMs, sizeof vulkanMs, "%.3f", vulkanEvalMs(*vulkan, table, mesh.positions, 7));
+        std::printf("| %d | %d | %d | %d | %zu | %.3f | %.3f | %s |\n", L, t.numVertices, outputFaces(t),
+                    table.numStencils(), table.bytes(), analyzerMs, evalMs[3], vulkanMs);
         std::fflush(stdout);
         io::writeObj((std::filesystem::path(args.outDir) / (stem + "_level" + std::to_string(L) + ".obj")).string(),
                      positions.data(), t);

@@ -2,12 +2,17 @@
 // lets TopologyError, io::ObjError and other exceptions escape to main(), which reports them.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "far/options.h"
 #include "far/stencil_table.h"
+
+namespace quadtri {
+class VulkanContext;
+}
 
 namespace quadtri::cli {
 
@@ -35,6 +40,12 @@ struct RefineArgs {
 // 3-float positions through `table` with the chosen evaluator. Vulkan without a usable device
 // falls back to the CPU evaluator, saying so on stderr.
 std::vector<float> evaluatePositions(EvaluatorKind kind, const StencilTable& table, const std::vector<float>& control);
+
+// For the demo's Vulkan column: a headless context, or null (saying why on stderr) without a device.
+std::unique_ptr<VulkanContext> openVulkan();
+// Median milliseconds of `runs` Vulkan evaluations of `table` (record, submit, wait on the fence;
+// the table and control vertices are uploaded once beforehand, outside the timing).
+double vulkanEvalMs(VulkanContext& ctx, const StencilTable& table, const std::vector<float>& control, int runs);
 
 struct InfoArgs {
     MeshArgs mesh;

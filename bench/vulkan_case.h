@@ -1,0 +1,22 @@
+// quadtri's Vulkan evaluation of one bench case: the per-level tables and control positions
+// uploaded, then all levels evaluated through one device buffer (record, submit, fence).
+#pragma once
+
+#include <vector>
+
+#include "far/refiner.h"
+#include "osd/vulkan_context.h"
+
+namespace quadtri::bench {
+
+struct VulkanFigures {
+    double uploadMs = 0;  // VulkanStencilTable of every level + control positions, median
+    double evalMs = 0;    // EvalLevelsAndWait over every level (submit to fence), median
+};
+
+// Checks the last level against `expected` (the serial CPU result) within `tolerance` first,
+// throwing std::runtime_error on a mismatch.
+VulkanFigures measureVulkan(VulkanContext& ctx, const Refiner& refiner, const std::vector<float>& control,
+                            const std::vector<float>& expected, double tolerance, int reps);
+
+}  // namespace quadtri::bench
