@@ -8,10 +8,16 @@ endforeach()
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
+# Runs that create a Vulkan device (refine --evaluator vulkan, demo) use VULKAN_PREFIX: in the
+# sanitizer build LeakSanitizer reports 128 bytes from lavapipe once the loader has unloaded the
+# driver at exit (memory its globals still reach; an unnamed module, so no suppression can match
+# it). Only leak checking is off for those runs; address and undefined-behaviour checks stay on.
+set(VULKAN_PREFIX ${CMAKE_COMMAND} -E env ASAN_OPTIONS=detect_leaks=0:abort_on_error=1)
+
 # run(<expected exit code> <args>...): runs quadtri, leaves OUT, ERR and the command line in CMD.
 macro(run expected)
   set(CMD "quadtri ${ARGN}")
-  execute_process(COMMAND "${QUADTRI}" ${ARGN} RESULT_VARIABLE RC OUTPUT_VARIABLE OUT ERROR_VARIABLE ERR
+  execute_process(COMMAND ${RUN_PREFIX} "${QUADTRI}" ${ARGN} RESULT_VARIABLE RC OUTPUT_VARIABLE OUT ERROR_VARIABLE ERR
                   TIMEOUT 120)
   if(NOT "${RC}" STREQUAL "${expected}")
     message(FATAL_ERROR "${CMD}: exit status '${RC}', expected ${expected}\nstdout:\n${OUT}\nstderr:\n${ERR}")
@@ -76,7 +82,9 @@ run(0 refine "${CYLINDER}" --level 1 --scheme bilinear --boundary edge-and-corne
 count_lines("${WORK}/cylinder_bl.obj" "v " vertices)
 expect_equal("'v' lines of bilinear level 1" "${vertices}" 130)
 
+set(RUN_PREFIX ${VULKAN_PREFIX})
 run(0 demo "${CYLINDER}" --levels 2 --out-dir "${WORK}/demo")
+unset(RUN_PREFIX)
 expect_contains("${OUT}" "| analyzer ms |")
 foreach(L 1 2)
   if(NOT EXISTS "${WORK}/demo/cylinder_capped_level${L}.obj")
@@ -126,7 +134,11 @@ message(STATUS "cli tests passed")
 
 # The evaluators write the same mesh (Vulkan falls back to the CPU, saying so, without a device).
 foreach(evaluator cpu tbb vulkan)
+  if(evaluator STREQUAL "vulkan")
+    set(RUN_PREFIX ${VULKAN_PREFIX})
+  endif()
   run(0 refine "${CYLINDER}" --level 2 --evaluator ${evaluator} -o "${WORK}/cyl_${evaluator}.obj")
+  unset(RUN_PREFIX)
 endforeach()
 foreach(evaluator tbb vulkan)
   file(STRINGS "${WORK}/cyl_cpu.obj" cpuLines REGEX "^v ")
