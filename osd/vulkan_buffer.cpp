@@ -20,13 +20,7 @@ VulkanVertexBuffer::VulkanVertexBuffer(VulkanContext& ctx, int numElements, int 
               VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) {
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         vkCmdFillBuffer(cmd, buffer_.buffer(), 0, VK_WHOLE_SIZE, 0);
-        auto barrier = detail::vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-        barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
-                                VK_ACCESS_TRANSFER_WRITE_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0,
-                             nullptr, 0, nullptr);
+        detail::barrierAfterTransferWrite(cmd);
     });
 }
 

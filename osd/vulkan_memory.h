@@ -50,4 +50,7 @@ void upload(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
 // Copies every region into its `target`, waiting for the device.
 void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
 
+// Makes transfer writes (copies, fills) visible to later compute-shader and transfer access.
+void barrierAfterTransferWrite(VkCommandBuffer cmd);
+
 }  // namespace quadtri::detail
