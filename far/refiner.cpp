@@ -27,7 +27,8 @@ std::size_t Refiner::estimateLevelBytes(int L) const {
     const std::size_t vertices = facePoints + p.numEdges() + p.numVertices;
     entries += 4 * std::size_t(p.numEdges()) + p.numVertices;
     const std::size_t topologyBytes = corners * 16 + edges * 25 + vertices * 22 + faces * 5;
-    const std::size_t tableBytes = entries * (4 + 4 + 8 + 4) + vertices * 8;  // double while built
+    // Index and weight per entry, plus the bound reserved while building (buildLevelStencils).
+    const std::size_t tableBytes = entries * (4 + 4 + 8 + 4) + vertices * 8;
     const std::size_t outputBytes = vertices * 3 * sizeof(float);
     return topologyBytes + tableBytes + outputBytes;
 }

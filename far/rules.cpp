@@ -7,6 +7,8 @@
 //                 face's centroid; α = 1/(2 + T + Q). Using the centroid for an n-gon's diagonal
 //                 corners gives Catmull-Clark's edge rule next to n-gons.
 //   vertex point: (1+η)(α(1 + nE/4) v + α/4 Σ neighbours + α/4 Σ quad-like centroids) − η v.
+// Schaefer-Warren replaces the smooth masks next to the tri/quad network (schaefer_warren.cpp);
+// sharp masks and everything away from the network are shared.
 #include "far/rules.h"
 
 #include <cmath>

@@ -47,7 +47,7 @@ void validateDescriptor(const TopologyDescriptor& d) {
     checkArray(d.numHoles, d.holeIndices, "numHoles", "holeIndices");
 
     long long total = 0;
-    std::vector<int> sorted;
+    std::vector<int> corners;
     for (int f = 0; f < d.numFaces; ++f) {
         const int n = d.numVertsPerFace[f];
         if (n < 3) fail(face(f) + " has " + std::to_string(n) + " vertices; a face needs at least 3", Component::Face, f);
@@ -61,18 +61,18 @@ void validateDescriptor(const TopologyDescriptor& d) {
                      Component::Face, f);
         // A corner equal to the one before it (cyclically) is a collapsed edge and is dropped; any
         // other repeat is an error, and so is a face left with fewer than 3 corners.
-        sorted.clear();
+        corners.clear();
         for (int i = 0; i < n; ++i)
-            if (verts[i] != verts[(i + n - 1) % n]) sorted.push_back(verts[i]);
-        if (sorted.size() < 3) {
+            if (verts[i] != verts[(i + n - 1) % n]) corners.push_back(verts[i]);
+        if (corners.size() < 3) {
             const int v = verts[0];
             fail(face(f) + ": vertex " + std::to_string(v) + " appears more than once, leaving " +
-                     std::to_string(sorted.size()) + " distinct corners; a face needs at least 3",
+                     std::to_string(corners.size()) + " distinct corners; a face needs at least 3",
                  Component::Face, f);
         }
-        std::sort(sorted.begin(), sorted.end());
-        const auto dup = std::adjacent_find(sorted.begin(), sorted.end());
-        if (dup != sorted.end())
+        std::sort(corners.begin(), corners.end());
+        const auto dup = std::adjacent_find(corners.begin(), corners.end());
+        if (dup != corners.end())
             fail(face(f) + ": vertex " + std::to_string(*dup) + " appears more than once", Component::Face, f);
     }
     for (int i = 0; i < d.numCreases; ++i) {

@@ -4,25 +4,17 @@
 #include <stdexcept>
 
 #include "osd/cpu_evaluator.h"
+#include "tests/test_support.h"
 
 namespace quadtri {
 namespace {
 
-// Three stencils over four sources: 0.5 s0 + 0.5 s1, s3, 0.25 (s0 + s1 + s2 + s3).
-StencilTable smallTable() {
-    StencilTable t;
-    t.numSourceVertices = 4;
-    t.sizes = {2, 1, 4};
-    t.offsets = {0, 2, 3};
-    t.indices = {0, 1, 3, 0, 1, 2, 3};
-    t.weights = {0.5f, 0.5f, 1.0f, 0.25f, 0.25f, 0.25f, 0.25f};
-    return t;
-}
+using test::handCheckedTable;
 
 float sourceValue(int vertex, int component) { return float(10 * vertex + component + 1); }
 
 void checkWidth(int width, int srcStride, int dstStride, int srcOffset, int dstOffset) {
-    const StencilTable t = smallTable();
+    const StencilTable t = handCheckedTable();
     std::vector<float> src(srcOffset + 4 * srcStride, -7.0f);
     for (int v = 0; v < 4; ++v)
         for (int c = 0; c < width; ++c) src[srcOffset + v * srcStride + c] = sourceValue(v, c);
@@ -49,7 +41,7 @@ TEST(CpuEvaluator, EveryWidthStrideAndOffset) {
 }
 
 TEST(CpuEvaluator, RangeWritesOnlyItsRows) {
-    const StencilTable t = smallTable();
+    const StencilTable t = handCheckedTable();
     std::vector<float> src(12);
     for (int v = 0; v < 4; ++v)
         for (int c = 0; c < 3; ++c) src[3 * v + c] = sourceValue(v, c);
@@ -65,7 +57,7 @@ TEST(CpuEvaluator, RangeWritesOnlyItsRows) {
 }
 
 TEST(CpuEvaluator, RejectsBadArguments) {
-    const StencilTable t = smallTable();
+    const StencilTable t = handCheckedTable();
     std::vector<float> src(16), dst(16);
     auto eval = [&](BufferDescriptor s, BufferDescriptor d, int start, int end) {
         CpuEvaluator::EvalStencils(src.data(), s, dst.data(), d, t, start, end);

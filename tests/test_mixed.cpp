@@ -227,12 +227,7 @@ TEST_P(MixedMesh, BilinearCountsUnityAndCorners) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, MixedMesh, ::testing::ValuesIn(kMeshes), [](const auto& info) {
-    std::string name = info.param;
-    for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch)))
-            ch = '_';
-    return name;
-});
+INSTANTIATE_TEST_SUITE_P(Meshes, MixedMesh, ::testing::ValuesIn(kMeshes),
+                         [](const auto& info) { return testNameOf(info.param); });
 
 }  // namespace

@@ -114,10 +114,7 @@ std::vector<ShapeCase> osdCases() {
 }
 
 std::string caseName(const testing::TestParamInfo<ShapeCase>& info) {
-    std::string name = info.param.shape + "_L" + std::to_string(info.param.level) + "_" + toString(info.param.ours);
-    for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    return name;
+    return testNameOf(info.param.shape + "_L" + std::to_string(info.param.level) + "_" + toString(info.param.ours));
 }
 
 std::string formatPoint(const float* p) {

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 
 #include "far/refine_topology.h"
 #include "tests/test_support.h"
@@ -54,16 +53,12 @@ void expectSameConnectivity(const Topology& direct, const std::string& where) {
 }
 
 TEST(RefineTopology, ChildLevelsEqualTheGenericBuilder) {
-    for (const char* dir : {"osd", "mixed"}) {
-        for (const auto& entry : std::filesystem::directory_iterator(meshPath(dir))) {
-            if (entry.path().extension() != ".obj") continue;
-            const std::string name = std::string(dir) + "/" + entry.path().filename().string();
-            const io::ObjMesh mesh = io::readObj(entry.path().string());
-            const int levels = mesh.numFaces() > 500 ? 1 : 2;
-            Refiner refiner(mesh.descriptor(), mesh.applyTags(Options()));
-            refiner.refineUniform(levels);
-            for (int L = 1; L <= levels; ++L) expectSameConnectivity(refiner.level(L), name + " level " + std::to_string(L));
-        }
+    for (const std::string& name : allMeshes()) {
+        const io::ObjMesh mesh = io::readObj(meshPath(name));
+        const int levels = mesh.numFaces() > 500 ? 1 : 2;
+        Refiner refiner(mesh.descriptor(), mesh.applyTags(Options()));
+        refiner.refineUniform(levels);
+        for (int L = 1; L <= levels; ++L) expectSameConnectivity(refiner.level(L), name + " level " + std::to_string(L));
     }
 }
 

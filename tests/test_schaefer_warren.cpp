@@ -397,10 +397,7 @@ const char* const kMixedMeshes[] = {
 std::string meshTestName(const testing::TestParamInfo<const char*>& info) {
     std::string name = info.param;
     name = name.substr(name.find('/') + 1);
-    name = name.substr(0, name.rfind('.'));
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    return name;
+    return testNameOf(name.substr(0, name.rfind('.')));
 }
 
 class SchaeferWarrenMixed : public testing::TestWithParam<const char*> {};

@@ -9,14 +9,6 @@
 namespace quadtri::test {
 namespace {
 
-std::vector<std::string> allMeshes() {
-    std::vector<std::string> names;
-    for (const char* dir : {"osd", "mixed"})
-        for (const auto& entry : std::filesystem::directory_iterator(meshPath(dir)))
-            if (entry.path().extension() == ".obj") names.push_back(std::string(dir) + "/" + entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 // Evaluation in double, so that the comparison sees the tables and not float rounding of the data.
 std::vector<double> evaluateDouble(const StencilTable& t, const std::vector<double>& src) {
@@ -76,12 +68,7 @@ TEST_P(StencilTables, PerLevelTablesAreConsistent) {
     }
 }
 
-std::string testName(const ::testing::TestParamInfo<std::string>& info) {
-    std::string name = info.param;
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    return name;
-}
+std::string testName(const ::testing::TestParamInfo<std::string>& info) { return testNameOf(info.param); }
 
 INSTANTIATE_TEST_SUITE_P(AllMeshes, StencilTables, ::testing::ValuesIn(allMeshes()), testName);
 

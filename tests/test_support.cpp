@@ -1,6 +1,8 @@
 #include "tests/test_support.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <limits>
 
@@ -52,6 +54,31 @@ double stencilWeightSum(const StencilTable& table, int i) {
     double sum = 0;
     for (int k = 0; k < table.sizes[i]; ++k) sum += table.weights[table.offsets[i] + k];
     return sum;
+}
+
+std::vector<std::string> allMeshes() {
+    std::vector<std::string> names;
+    for (const char* dir : {"osd", "mixed"})
+        for (const auto& entry : std::filesystem::directory_iterator(meshPath(dir)))
+            if (entry.path().extension() == ".obj") names.push_back(std::string(dir) + "/" + entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string testNameOf(std::string text) {
+    for (char& c : text)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return text;
+}
+
+StencilTable handCheckedTable() {
+    StencilTable t;
+    t.numSourceVertices = 4;
+    t.sizes = {2, 1, 4};
+    t.offsets = {0, 2, 3};
+    t.indices = {0, 1, 3, 0, 1, 2, 3};
+    t.weights = {0.5f, 0.5f, 1.0f, 0.25f, 0.25f, 0.25f, 0.25f};
+    return t;
 }
 
 }  // namespace quadtri::test

@@ -31,4 +31,13 @@ double boundingBoxDiagonal(const std::vector<float>& xyz);
 // Sum of the weights of stencil i.
 double stencilWeightSum(const StencilTable& table, int i);
 
+// Every mesh of tests/meshes/osd and tests/meshes/mixed ("osd/catmark_cube.obj", ...), sorted.
+std::vector<std::string> allMeshes();
+
+// `text` with every character that is not a letter or digit replaced by '_' (a test name).
+std::string testNameOf(std::string text);
+
+// Three stencils over four sources: 0.5 s0 + 0.5 s1, s3, 0.25 (s0 + s1 + s2 + s3).
+StencilTable handCheckedTable();
+
 }  // namespace quadtri::test

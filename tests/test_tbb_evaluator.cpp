@@ -29,14 +29,6 @@ constexpr float kUntouched = -12345.5f;
 constexpr int kWidths[] = {1, 3, 4, 7};
 constexpr int kThreads[] = {1, 2};
 
-std::vector<std::string> allMeshes() {
-    std::vector<std::string> names;
-    for (const char* dir : {"osd", "mixed"})
-        for (const auto& entry : std::filesystem::directory_iterator(meshPath(dir)))
-            if (entry.path().extension() == ".obj") names.push_back(std::string(dir) + "/" + entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 // Layouts with padding after every element and floats before element 0 (different on each side).
 BufferDescriptor srcLayout(int width) { return BufferDescriptor(3, width, width + 2); }
@@ -124,12 +116,7 @@ TEST_P(TbbEvaluatorMeshes, BitIdenticalToCpuEvaluator) {
     }
 }
 
-std::string testName(const ::testing::TestParamInfo<std::string>& info) {
-    std::string name = info.param;
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    return name;
-}
+std::string testName(const ::testing::TestParamInfo<std::string>& info) { return testNameOf(info.param); }
 
 INSTANTIATE_TEST_SUITE_P(AllMeshes, TbbEvaluatorMeshes, ::testing::ValuesIn(allMeshes()), testName);
 
@@ -203,12 +190,7 @@ TEST(TbbEvaluator, RangeWritesExactlyItsRows) {
 
 TEST(TbbEvaluator, RangeOnSmallTable) {
     // The hand-checked table of test_cpu_evaluator.cpp: 0.5 s0 + 0.5 s1, s3, 0.25 (s0 + s1 + s2 + s3).
-    StencilTable t;
-    t.numSourceVertices = 4;
-    t.sizes = {2, 1, 4};
-    t.offsets = {0, 2, 3};
-    t.indices = {0, 1, 3, 0, 1, 2, 3};
-    t.weights = {0.5f, 0.5f, 1.0f, 0.25f, 0.25f, 0.25f, 0.25f};
+    const StencilTable t = handCheckedTable();
     std::vector<float> src(12);
     for (int v = 0; v < 4; ++v)
         for (int c = 0; c < 3; ++c) src[3 * v + c] = float(10 * v + c + 1);
@@ -233,12 +215,7 @@ TEST(TbbEvaluator, RangeOnSmallTable) {
 }
 
 TEST(TbbEvaluator, RejectsBadArgumentsLikeCpuEvaluator) {
-    StencilTable t;
-    t.numSourceVertices = 4;
-    t.sizes = {2, 1, 4};
-    t.offsets = {0, 2, 3};
-    t.indices = {0, 1, 3, 0, 1, 2, 3};
-    t.weights = {0.5f, 0.5f, 1.0f, 0.25f, 0.25f, 0.25f, 0.25f};
+    const StencilTable t = handCheckedTable();
     std::vector<float> src(16), dst(16);
     auto tbbEval = [&](BufferDescriptor s, BufferDescriptor d, int start, int end) {
         TbbEvaluator::EvalStencils(src.data(), s, dst.data(), d, t, start, end);

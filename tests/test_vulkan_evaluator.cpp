@@ -23,21 +23,9 @@ constexpr double kRelativeTolerance = 1e-5;  // of the control mesh's bounding-b
 // Width 3 packed, width 4 after one float, width 7 with stride 8 after three floats.
 const BufferDescriptor kLayouts[] = {BufferDescriptor(0, 3, 3), BufferDescriptor(1, 4, 4), BufferDescriptor(3, 7, 8)};
 
-std::vector<std::string> allMeshes() {
-    std::vector<std::string> names;
-    for (const char* dir : {"osd", "mixed"})
-        for (const auto& entry : std::filesystem::directory_iterator(meshPath(dir)))
-            if (entry.path().extension() == ".obj")
-                names.push_back(std::string(dir) + "/" + entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 std::string testName(const testing::TestParamInfo<std::string>& info) {
-    std::string name = info.param.substr(0, info.param.size() - 4);
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    return name;
+    return testNameOf(info.param.substr(0, info.param.size() - 4));  // without ".obj"
 }
 
 class VulkanMeshTest : public VulkanTest, public testing::WithParamInterface<std::string> {};
@@ -143,12 +131,7 @@ TEST_F(VulkanTest, RangesWriteOnlyTheirRows) {
 }
 
 TEST_F(VulkanTest, RejectsBadArguments) {
-    StencilTable t;
-    t.numSourceVertices = 4;
-    t.sizes = {2, 1, 4};
-    t.offsets = {0, 2, 3};
-    t.indices = {0, 1, 3, 0, 1, 2, 3};
-    t.weights = {0.5f, 0.5f, 1.0f, 0.25f, 0.25f, 0.25f, 0.25f};
+    const StencilTable t = handCheckedTable();
     VulkanStencilTable table(*ctx, t);
     VulkanEvaluator evaluator(*ctx);
     VulkanVertexBuffer src = VulkanVertexBuffer::create(*ctx, 4, 4), dst = VulkanVertexBuffer::create(*ctx, 3, 4);
