@@ -1,5 +1,10 @@
 #include "far/refine_topology.h"
 
+#include <algorithm>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "far/crease.h"
 
 namespace quadtri {
@@ -15,95 +20,281 @@ ChildNumbering numberChildren(const Topology& parent) {
 
 namespace {
 
-// Builds the child level straight from the parent: its faces, edges, flags and sharpness are all
-// known by construction, so no edge search or fan walk is needed.
+// Items per task of the parallel loops: enough work to amortise a task, few enough that both
+// cores get a share of a small level.
+constexpr int kGrain = 4096;
+
+template <typename Body>
+void forEach(int count, const Body& body) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, count, kGrain), [&](const tbb::blocked_range<int>& r) {
+        for (int i = r.begin(); i != r.end(); ++i) body(i);
+    });
+}
+
+// Builds the child level straight from the parent: its faces, edges, incidences, flags and
+// sharpness are all known by construction, so no edge search, sort or fan walk is needed, and
+// every array is filled in parallel, each child item gathering from its parent's few neighbours.
+//   child faces: a quad-like face's n quads (corner i's first), a triangle's 3 corners then middle.
 //   child edges: 2e and 2e+1 are the halves of parent edge e at edgeVerts[2e] and [2e+1]; then
 //                each parent face's interior edges: quad-like face j -> (edge point j, centre),
 //                triangle j -> (edge point j, edge point j+1) of the middle triangle.
-//   child faces: a quad-like face's n quads (corner order), a triangle's 3 corners then middle.
+// Incidence lists come out in ascending order, as the generic builder (completeTopology) makes them.
 class ChildBuilder {
 public:
     ChildBuilder(const Topology& parent, const ChildNumbering& numbering, Topology& child)
-        : p_(parent), num_(numbering), c_(child), firstInterior_(parent.numFaces() + 1) {
+        : p_(parent), num_(numbering), c_(child) {
+        const int nf = p_.numFaces();
+        firstChildFace_.resize(std::size_t(nf) + 1);
+        firstInterior_.resize(std::size_t(nf) + 1);
+        firstChildFace_[0] = 0;
         firstInterior_[0] = 2 * p_.numEdges();
-        for (int f = 0; f < p_.numFaces(); ++f) firstInterior_[f + 1] = firstInterior_[f] + p_.faceSize(f);
+        for (int f = 0; f < nf; ++f) {
+            const int n = p_.faceSize(f);
+            firstChildFace_[f + 1] = firstChildFace_[f] + (n == 3 ? 4 : n);
+            firstInterior_[f + 1] = firstInterior_[f] + n;
+        }
     }
 
-    void build() {
+    void build(TopologyDetail detail) {
         c_.numVertices = num_.numFacePoints + p_.numEdges() + p_.numVertices;
-        faces();
+        if (detail == TopologyDetail::FacesOnly) return faces<false>();
+        faces<true>();
         edges();
-        buildIncidences(c_);
+        edgeFaces();
+        vertexFaces();
+        vertexEdges();
         flags();
     }
 
 private:
     int half(int e, int v) const { return 2 * e + (p_.edgeVerts[2 * e] == v ? 0 : 1); }
+    // Interior edge j of face f, j in [-1, n]: wraps without a division.
     int interior(int f, int j) const {
         const int n = p_.faceSize(f);
-        return firstInterior_[f] + (j + n) % n;
+        return firstInterior_[f] + (j < 0 ? j + n : j >= n ? j - n : j);
+    }
+    // Position of edge e (or vertex v) among face f's edges (corners). A valid face holds each once.
+    int edgeSlot(int f, int e) const {
+        int j = 0;
+        while (p_.faceEdges[p_.faceOffsets[f] + j] != e) ++j;
+        return j;
+    }
+    int cornerSlot(int f, int v) const {
+        int j = 0;
+        while (p_.faceVerts[p_.faceOffsets[f] + j] != v) ++j;
+        return j;
     }
 
-    void corner(int vertex, int edge) {
-        c_.faceVerts.push_back(vertex);
-        c_.faceEdges.push_back(edge);
-    }
-
+    template <bool WithEdges>
     void faces() {
-        std::size_t childFaces = 0, childCorners = 0;
-        for (int f = 0; f < p_.numFaces(); ++f) {
-            const std::size_t n = p_.faceSize(f);
-            childFaces += n == 3 ? 4 : n;
-            childCorners += n == 3 ? 12 : 4 * n;
-        }
-        c_.faceOffsets.assign(1, 0);
-        c_.faceOffsets.reserve(childFaces + 1);
-        c_.faceVerts.reserve(childCorners);
-        c_.faceEdges.reserve(childCorners);
-        c_.faceHole.reserve(childFaces);
-        for (int f = 0; f < p_.numFaces(); ++f) {
-            const int b = p_.faceOffsets[f], n = p_.faceSize(f);
-            for (int i = 0; i < n; ++i) {  // corner i's child keeps the parent's orientation
-                const int v = p_.faceVerts[b + i], e = p_.faceEdges[b + i], prev = p_.faceEdges[b + (i + n - 1) % n];
-                corner(num_.vertexPoint(v), half(e, v));
+        const int nf = p_.numFaces(), numChildFaces = firstChildFace_[nf];
+        // A quad-like face of n corners makes n quads (4n child corners), a triangle four
+        // triangles (12): 4 child corners per parent corner either way.
+        c_.faceOffsets.resize(std::size_t(numChildFaces) + 1);
+        c_.faceVerts.resize(4 * p_.faceVerts.size());
+        c_.faceHole.resize(numChildFaces);
+        if (WithEdges) c_.faceEdges.resize(c_.faceVerts.size());
+        forEach(nf, [&](int f) {
+            const int b = p_.faceOffsets[f], n = p_.faceSize(f), first = firstChildFace_[f];
+            int* offsets = &c_.faceOffsets[first];
+            const int corner = 4 * b;
+            int* verts = &c_.faceVerts[corner];
+            int* edges = WithEdges ? &c_.faceEdges[corner] : nullptr;
+            // The edge is computed only when kept (a faces-only level skips the lookups).
+            auto put = [&](int k, int vertex, auto edge) {
+                verts[k] = vertex;
+                if constexpr (WithEdges) edges[k] = edge();
+            };
+            int k = 0;
+            for (int i = 0, last = n - 1; i < n; last = i++) {  // corner i's child keeps the parent's orientation
+                const int v = p_.faceVerts[b + i], e = p_.faceEdges[b + i], prev = p_.faceEdges[b + last];
+                offsets[i] = corner + k;
+                put(k++, num_.vertexPoint(v), [&] { return half(e, v); });
                 if (n == 3) {
-                    corner(num_.edgePoint(e), interior(f, i - 1));
+                    put(k++, num_.edgePoint(e), [&] { return interior(f, last); });
                 } else {
-                    corner(num_.edgePoint(e), interior(f, i));
-                    corner(num_.facePoint[f], interior(f, i - 1));
+                    put(k++, num_.edgePoint(e), [&] { return interior(f, i); });
+                    put(k++, num_.facePoint[f], [&] { return interior(f, last); });
                 }
-                corner(num_.edgePoint(prev), half(prev, v));
-                close(f);
+                put(k++, num_.edgePoint(prev), [&] { return half(prev, v); });
             }
             if (n == 3) {
-                for (int i = 0; i < 3; ++i) corner(num_.edgePoint(p_.faceEdges[b + i]), interior(f, i));
-                close(f);
+                offsets[3] = corner + k;
+                for (int i = 0; i < 3; ++i) put(k++, num_.edgePoint(p_.faceEdges[b + i]), [&] { return interior(f, i); });
             }
-        }
-    }
-
-    void close(int parentFace) {
-        c_.faceOffsets.push_back(int(c_.faceVerts.size()));
-        c_.faceHole.push_back(p_.faceHole[parentFace]);
+            for (int i = first; i < firstChildFace_[f + 1]; ++i) c_.faceHole[i] = p_.faceHole[f];
+        });
+        c_.faceOffsets[numChildFaces] = int(c_.faceVerts.size());
     }
 
     void edges() {
+        const int ne = p_.numEdges();
         c_.edgeVerts.resize(2 * std::size_t(firstInterior_.back()));
-        for (int e = 0; e < p_.numEdges(); ++e) {
+        forEach(ne, [&](int e) {
             const int ep = num_.edgePoint(e);
-            c_.edgeVerts[4 * e + 0] = num_.vertexPoint(p_.edgeVerts[2 * e]);
-            c_.edgeVerts[4 * e + 1] = ep;
-            c_.edgeVerts[4 * e + 2] = ep;
-            c_.edgeVerts[4 * e + 3] = num_.vertexPoint(p_.edgeVerts[2 * e + 1]);
-        }
-        for (int f = 0; f < p_.numFaces(); ++f) {
+            c_.edgeVerts[4 * std::size_t(e) + 0] = num_.vertexPoint(p_.edgeVerts[2 * e]);
+            c_.edgeVerts[4 * std::size_t(e) + 1] = ep;
+            c_.edgeVerts[4 * std::size_t(e) + 2] = ep;
+            c_.edgeVerts[4 * std::size_t(e) + 3] = num_.vertexPoint(p_.edgeVerts[2 * e + 1]);
+        });
+        forEach(p_.numFaces(), [&](int f) {
             const int b = p_.faceOffsets[f], n = p_.faceSize(f);
             for (int j = 0; j < n; ++j) {
-                const int k = interior(f, j);
+                const std::size_t k = interior(f, j);
                 c_.edgeVerts[2 * k] = num_.edgePoint(p_.faceEdges[b + j]);
-                c_.edgeVerts[2 * k + 1] = n == 3 ? num_.edgePoint(p_.faceEdges[b + (j + 1) % 3]) : num_.facePoint[f];
+                c_.edgeVerts[2 * k + 1] = n == 3 ? num_.edgePoint(p_.faceEdges[b + (j == 2 ? 0 : j + 1)]) : num_.facePoint[f];
             }
+        });
+    }
+
+    // Halves: one child face per parent face of the edge, the one at the half's end. Interior
+    // edges: the two child faces beside them.
+    void edgeFaces() {
+        const int ne = p_.numEdges(), nf = p_.numFaces(), numChildEdges = c_.numEdges();
+        c_.edgeFaceOffsets.resize(std::size_t(numChildEdges) + 1);
+        const int interiorBase = 2 * int(p_.edgeFaces.size());
+        forEach(ne, [&](int e) {
+            const int b = p_.edgeFaceOffsets[e], n = p_.edgeFaceCount(e);
+            c_.edgeFaceOffsets[2 * e] = 2 * b;
+            c_.edgeFaceOffsets[2 * e + 1] = 2 * b + n;
+        });
+        forEach(numChildEdges - 2 * ne, [&](int k) { c_.edgeFaceOffsets[2 * ne + k] = interiorBase + 2 * k; });
+        c_.edgeFaceOffsets[numChildEdges] = interiorBase + 2 * (numChildEdges - 2 * ne);
+        c_.edgeFaces.resize(c_.edgeFaceOffsets[numChildEdges]);
+        forEach(ne, [&](int e) {
+            int* out = &c_.edgeFaces[c_.edgeFaceOffsets[2 * e]];
+            const int n = p_.edgeFaceCount(e), a = p_.edgeVerts[2 * e];
+            for (int i = 0; i < n; ++i) {
+                const int f = p_.edgeFaces[p_.edgeFaceOffsets[e] + i], fn = p_.faceSize(f), j = edgeSlot(f, e);
+                // The edge runs from corner j to corner j+1 of f.
+                const bool aFirst = p_.faceVerts[p_.faceOffsets[f] + j] == a;
+                const int next = j + 1 == fn ? 0 : j + 1;
+                out[i] = firstChildFace_[f] + (aFirst ? j : next);
+                out[n + i] = firstChildFace_[f] + (aFirst ? next : j);
+            }
+        });
+        forEach(nf, [&](int f) {
+            const int n = p_.faceSize(f), first = firstChildFace_[f];
+            for (int j = 0; j < n; ++j) {
+                int* out = &c_.edgeFaces[c_.edgeFaceOffsets[interior(f, j)]];
+                // Quad-like: between child faces j and j+1; triangle: corner face j+1 and the middle.
+                const int next = j + 1 == n ? 0 : j + 1;
+                const int x = n == 3 ? next : j, y = n == 3 ? 3 : next;
+                out[0] = first + std::min(x, y);
+                out[1] = first + std::max(x, y);
+            }
+        });
+    }
+
+    // Child vertex order: face points, edge points, vertex points (ChildNumbering).
+    template <typename Count, typename Fill>
+    void incidence(std::vector<int>& offsets, std::vector<int>& list, const Count& count, const Fill& fill) {
+        const int nv = c_.numVertices;
+        offsets.resize(std::size_t(nv) + 1);
+        offsets[0] = 0;
+        forEach(nv, [&](int v) { offsets[v + 1] = count(v); });
+        for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
+        list.resize(offsets[nv]);
+        forEach(nv, [&](int v) { fill(v, &list[offsets[v]]); });
+    }
+
+    // Which parent component child vertex v stands for.
+    enum class Kind { Face, Edge, Vertex };
+    Kind kindOf(int v, int& index) const {
+        if (v < num_.numFacePoints) {
+            index = faceOfPoint_[v];
+            return Kind::Face;
         }
+        if (v < num_.numFacePoints + p_.numEdges()) {
+            index = v - num_.numFacePoints;
+            return Kind::Edge;
+        }
+        index = v - num_.numFacePoints - p_.numEdges();
+        return Kind::Vertex;
+    }
+
+    void vertexFaces() {
+        faceOfPoint_.resize(num_.numFacePoints);
+        for (int f = 0; f < p_.numFaces(); ++f)
+            if (num_.facePoint[f] >= 0) faceOfPoint_[num_.facePoint[f]] = f;
+        auto count = [&](int v) {
+            int i;
+            switch (kindOf(v, i)) {
+            case Kind::Face: return p_.faceSize(i);
+            case Kind::Vertex: return p_.vertexFaceCount(i);
+            case Kind::Edge: break;
+            }
+            int total = 0;
+            for (int k = p_.edgeFaceOffsets[i]; k < p_.edgeFaceOffsets[i + 1]; ++k)
+                total += p_.faceSize(p_.edgeFaces[k]) == 3 ? 3 : 2;
+            return total;
+        };
+        auto fill = [&](int v, int* out) {
+            int i;
+            switch (kindOf(v, i)) {
+            case Kind::Face:
+                for (int j = 0; j < p_.faceSize(i); ++j) out[j] = firstChildFace_[i] + j;
+                return;
+            case Kind::Vertex:
+                for (int k = p_.vertFaceOffsets[i]; k < p_.vertFaceOffsets[i + 1]; ++k) {
+                    const int f = p_.vertFaces[k];
+                    *out++ = firstChildFace_[f] + cornerSlot(f, i);
+                }
+                return;
+            case Kind::Edge: break;
+            }
+            // Edge point of edge j of f: corner faces j and j+1, and a triangle's middle.
+            for (int k = p_.edgeFaceOffsets[i]; k < p_.edgeFaceOffsets[i + 1]; ++k) {
+                const int f = p_.edgeFaces[k], n = p_.faceSize(f), j = edgeSlot(f, i), first = firstChildFace_[f];
+                const int next = j + 1 == n ? 0 : j + 1;
+                *out++ = first + std::min(j, next);
+                *out++ = first + std::max(j, next);
+                if (n == 3) *out++ = first + 3;
+            }
+        };
+        incidence(c_.vertFaceOffsets, c_.vertFaces, count, fill);
+    }
+
+    void vertexEdges() {
+        auto count = [&](int v) {
+            int i;
+            switch (kindOf(v, i)) {
+            case Kind::Face: return p_.faceSize(i);
+            case Kind::Vertex: return p_.vertexEdgeCount(i);
+            case Kind::Edge: break;
+            }
+            int total = 2;
+            for (int k = p_.edgeFaceOffsets[i]; k < p_.edgeFaceOffsets[i + 1]; ++k)
+                total += p_.faceSize(p_.edgeFaces[k]) == 3 ? 2 : 1;
+            return total;
+        };
+        auto fill = [&](int v, int* out) {
+            int i;
+            switch (kindOf(v, i)) {
+            case Kind::Face:
+                for (int j = 0; j < p_.faceSize(i); ++j) out[j] = firstInterior_[i] + j;
+                return;
+            case Kind::Vertex:
+                for (int k = p_.vertEdgeOffsets[i]; k < p_.vertEdgeOffsets[i + 1]; ++k) *out++ = half(p_.vertEdges[k], i);
+                return;
+            case Kind::Edge: break;
+            }
+            // Edge point: both halves, then per face the interior edges ending at it (a
+            // quad-like face's edge j -> interior j; a triangle's -> interiors j-1 and j).
+            *out++ = 2 * i;
+            *out++ = 2 * i + 1;
+            for (int k = p_.edgeFaceOffsets[i]; k < p_.edgeFaceOffsets[i + 1]; ++k) {
+                const int f = p_.edgeFaces[k], j = edgeSlot(f, i);
+                if (p_.faceSize(f) != 3) {
+                    *out++ = interior(f, j);
+                    continue;
+                }
+                const int a = interior(f, j - 1), b = interior(f, j);
+                *out++ = std::min(a, b);
+                *out++ = std::max(a, b);
+            }
+        };
+        incidence(c_.vertEdgeOffsets, c_.vertEdges, count, fill);
     }
 
     // Halves of a parent edge keep its boundary / non-manifold / seam flags; interior edges have
@@ -127,7 +318,9 @@ private:
     const Topology& p_;
     const ChildNumbering& num_;
     Topology& c_;
-    std::vector<int> firstInterior_;  // first interior child edge of each parent face
+    std::vector<int> firstChildFace_;  // first child face of each parent face (+ total)
+    std::vector<int> firstInterior_;   // first interior child edge of each parent face (+ total)
+    std::vector<int> faceOfPoint_;     // parent face of each face point
 };
 
 // Halves of parent edges inherit decayed sharpness (Chaikin per end); interior edges are smooth.
@@ -148,10 +341,11 @@ void inheritSharpness(const Topology& p, const ChildNumbering& num, CreaseMethod
 
 }  // namespace
 
-Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod) {
+Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod,
+                        TopologyDetail detail) {
     Topology child;
-    ChildBuilder(parent, numbering, child).build();
-    inheritSharpness(parent, numbering, creaseMethod, child);
+    ChildBuilder(parent, numbering, child).build(detail);
+    if (detail == TopologyDetail::Full) inheritSharpness(parent, numbering, creaseMethod, child);
     return child;
 }
 

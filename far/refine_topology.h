@@ -20,7 +20,9 @@ struct ChildNumbering {
 
 ChildNumbering numberChildren(const Topology& parent);
 
-// The child level: faces (children of hole faces stay holes), connectivity and sharpness.
-Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod);
+// The child level: faces (children of hole faces stay holes) and, with TopologyDetail::Full,
+// connectivity and sharpness.
+Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod,
+                        TopologyDetail detail = TopologyDetail::Full);
 
 }  // namespace quadtri

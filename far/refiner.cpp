@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include <tbb/parallel_invoke.h>
+
 #include "far/refine_topology.h"
 #include "far/rules.h"
 
@@ -9,6 +11,7 @@ namespace quadtri {
 
 Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
     levels_.push_back(buildBaseTopology(desc, options));
+    detail_.push_back(TopologyDetail::Full);
 }
 
 std::size_t Refiner::estimateLevelBytes(int L) const {
@@ -33,7 +36,14 @@ std::size_t Refiner::estimateLevelBytes(int L) const {
     return topologyBytes + tableBytes + outputBytes;
 }
 
-void Refiner::refineUniform(int maxLevel) {
+void Refiner::completeLevel(int L) {
+    if (detail_[L] == TopologyDetail::Full) return;
+    const Topology& parent = levels_[L - 1];
+    levels_[L] = refineTopology(parent, numberChildren(parent), options_.creaseMethod, TopologyDetail::Full);
+    detail_[L] = TopologyDetail::Full;
+}
+
+void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
     if (maxLevel < 0) throw TopologyError("refinement level " + std::to_string(maxLevel) + " is negative");
     while (this->maxLevel() < maxLevel) {
         const int L = this->maxLevel() + 1;
@@ -42,11 +52,20 @@ void Refiner::refineUniform(int maxLevel) {
             throw TopologyError("level " + std::to_string(L) + " needs an estimated " + std::to_string(estimate) +
                                 " bytes of tables and output, over the budget of " +
                                 std::to_string(options_.memoryBudgetBytes) + " bytes (Options::memoryBudgetBytes)");
+        completeLevel(L - 1);
         const Topology& parent = levels_.back();
         const ChildNumbering numbering = numberChildren(parent);
-        levelTables_.push_back(buildLevelStencils<StencilTable>(parent, numbering, options_));
-        levels_.push_back(refineTopology(parent, numbering, options_.creaseMethod));
+        const TopologyDetail detail = L == maxLevel ? lastLevel : TopologyDetail::Full;
+        // Both read only the parent level: build them side by side.
+        StencilTable table;
+        Topology child;
+        tbb::parallel_invoke([&] { table = buildLevelStencils<StencilTable>(parent, numbering, options_); },
+                             [&] { child = refineTopology(parent, numbering, options_.creaseMethod, detail); });
+        levelTables_.push_back(std::move(table));
+        levels_.push_back(std::move(child));
+        detail_.push_back(detail);
     }
+    if (lastLevel == TopologyDetail::Full) completeLevel(maxLevel);
 }
 
 StencilTable Refiner::factorizedStencils(int L) const {

@@ -17,13 +17,16 @@ public:
 
     // Refines to `maxLevel` (>= 0), building the topology and per-level stencil table of every
     // level not yet built. Throws TopologyError, before allocating, if a level's estimated
-    // tables and output exceed options.memoryBudgetBytes.
-    void refineUniform(int maxLevel);
+    // tables and output exceed options.memoryBudgetBytes. The last level holds only its faces
+    // unless `lastLevel` asks for Full (as OpenSubdiv's fullTopologyInLastLevel); refining
+    // further, or asking again with Full, completes it.
+    void refineUniform(int maxLevel, TopologyDetail lastLevel = TopologyDetail::FacesOnly);
 
     int maxLevel() const { return int(levels_.size()) - 1; }
     const Options& options() const { return options_; }
 
-    // Topology of level 0 .. maxLevel(). Vertex order of level L >= 1: the face points of the
+    // Topology of level 0 .. maxLevel() (the last one possibly faces only, see refineUniform).
+    // Vertex order of level L >= 1: the face points of the
     // non-triangle faces of level L-1 (in face order), then one point per edge (edge order),
     // then one point per vertex (vertex order).
     const Topology& level(int L) const { return levels_.at(L); }
@@ -39,8 +42,11 @@ public:
     std::size_t estimateLevelBytes(int L) const;
 
 private:
+    void completeLevel(int L);  // rebuilds a faces-only level in full
+
     Options options_;
     std::vector<Topology> levels_;
+    std::vector<TopologyDetail> detail_;  // per level
     std::vector<StencilTable> levelTables_;
 };
 

@@ -8,25 +8,45 @@
 //                 corners gives Catmull-Clark's edge rule next to n-gons.
 //   vertex point: (1+η)(α(1 + nE/4) v + α/4 Σ neighbours + α/4 Σ quad-like centroids) − η v.
 // Schaefer-Warren replaces the smooth masks next to the tri/quad network (schaefer_warren.cpp);
-// sharp masks and everything away from the network are shared.
+// sharp masks and everything away from the network are shared. Catmark-butterfly replaces every
+// mask that touches a triangle (butterfly.cpp) except at irregular smooth seam vertices, and keeps
+// the rest: Catmull-Clark, and Stam-Loop's mixed vertex rule there.
 #include "far/rules.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <optional>
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "far/butterfly.h"
 #include "far/crease.h"
 #include "far/schaefer_warren.h"
 #include "far/sparse_accumulator.h"
+#include "far/weight_pool.h"
 
 namespace quadtri {
 
 double stamLoopEta(int nE, int nQ, int nT) {
     const double n = nE;
     if (nT == 0) return (4.0 - n) * (n + 1.0) / (n * n);  // Catmull-Clark
-    if (nQ == 0) {                                        // Loop, with Loop's original β
-        const double c = 3.0 / 8.0 + 0.25 * std::cos(2.0 * M_PI / n);
-        const double beta = (5.0 / 8.0 - c * c) / n;
-        return 2.0 * (n + 2.0) * beta - 1.0;
+    if (nQ == 0) {  // Loop, with Loop's original β; tabulated, as every vertex asks for it
+        auto loopEta = [](double valence) {
+            const double c = 3.0 / 8.0 + 0.25 * std::cos(2.0 * M_PI / valence);
+            const double beta = (5.0 / 8.0 - c * c) / valence;
+            return 2.0 * (valence + 2.0) * beta - 1.0;
+        };
+        constexpr int kTabulated = 32;
+        static const std::array<double, kTabulated> table = [&] {
+            std::array<double, kTabulated> values{};
+            for (int k = 1; k < kTabulated; ++k) values[k] = loopEta(k);
+            return values;
+        }();
+        return nE > 0 && nE < kTabulated ? table[nE] : loopEta(n);
     }
     if (nE == 2 && nQ == 1) return -0.20505;
     if (nE == 3 && nQ == 1) return 54.0 / 67.0;
@@ -43,6 +63,7 @@ struct Level {
     const Topology& t;
     SparseAccumulator& acc;
     SchaeferWarrenMasks* unzipped;  // the smooth path of Schaefer-Warren, null for Stam-Loop
+    CatmarkButterflyMasks* butterfly;  // every mask of catmark-butterfly that touches a triangle, or null
 
     void facePoint(int f) {
         if (unzipped && unzipped->touchesFace(f))
@@ -57,12 +78,14 @@ struct Level {
     }
 
     void edgeSharp(int e, double scale) {
+        if (butterfly && butterfly->touchesSharpEdge(e)) return butterfly->sharpEdgePoint(e, scale);
         acc.add(t.edgeVerts[2 * e], 0.5 * scale);
         acc.add(t.edgeVerts[2 * e + 1], 0.5 * scale);
     }
 
     void edgeSmooth(int e, double scale) {
         if (unzipped && unzipped->touchesEdge(e)) return unzipped->edgePoint(e, scale);
+        if (butterfly && butterfly->touchesEdge(e)) return butterfly->smoothEdgePoint(e, scale);
         const int a = t.edgeVerts[2 * e], b = t.edgeVerts[2 * e + 1];
         int tris = 0, quads = 0;
         for (int i = t.edgeFaceOffsets[e]; i < t.edgeFaceOffsets[e + 1]; ++i)
@@ -104,6 +127,7 @@ struct Level {
     }
 
     void vertexRule(int v, VertexRule rule, const float* edgeSharpness, double scale) {
+        if (butterfly && butterfly->touchesVertex(v, rule)) return butterfly->vertexPoint(v, rule, edgeSharpness, scale);
         switch (rule) {
         case VertexRule::Smooth:
         case VertexRule::Dart: vertexSmooth(v, scale); break;
@@ -126,89 +150,232 @@ float childSharpnessAt(const Topology& t, const std::vector<float>& childEdgeSha
     return 0.0f;
 }
 
+// Appends each accumulated mask to the table being built. The float table interns the mask's
+// weights in the level's pool, so identical masks share one copy; the double table (analysis
+// and composition) stores them per entry.
+template <typename Table>
+class StencilWriter;
+
+template <>
+class StencilWriter<StencilTableD> {
+public:
+    StencilWriter(StencilTableD& table, int numStencils, std::size_t maxEntries) : table_(table) {
+        table_.sizes.reserve(numStencils);
+        table_.offsets.reserve(numStencils);
+        table_.indices.reserve(maxEntries);
+        table_.weights.reserve(maxEntries);
+    }
+    void append(SparseAccumulator& acc) {
+        table_.offsets.push_back(int(table_.indices.size()));
+        table_.sizes.push_back(acc.flush(table_.indices, table_.weights));
+    }
+    // Appends the stencils of a table built for the children that follow.
+    void append(const StencilTableD& part) {
+        const int base = int(table_.indices.size());
+        for (int offset : part.offsets) table_.offsets.push_back(base + offset);
+        table_.sizes.insert(table_.sizes.end(), part.sizes.begin(), part.sizes.end());
+        table_.indices.insert(table_.indices.end(), part.indices.begin(), part.indices.end());
+        table_.weights.insert(table_.weights.end(), part.weights.begin(), part.weights.end());
+    }
+    void finish() {}
+
+private:
+    StencilTableD& table_;
+};
+
+template <>
+class StencilWriter<StencilTable> {
+public:
+    StencilWriter(StencilTable& table, int numStencils, std::size_t maxEntries) : table_(table) {
+        table_.offsets.reserve(std::size_t(numStencils) + 1);
+        table_.weightOffsets.reserve(numStencils);
+        table_.indices.reserve(maxEntries);
+    }
+    void append(SparseAccumulator& acc) {
+        maskWeights_.clear();  // keeps its capacity: no allocation per stencil
+        const int n = acc.flush(table_.indices, maskWeights_);
+        table_.offsets.push_back(int(table_.indices.size()));
+        // Neighbouring children are mostly of one kind and regular: most masks repeat the one
+        // before, which a bitwise comparison confirms without hashing.
+        if (!sameAsPrevious(n)) {
+            previousOffset_ = pool_.intern(maskWeights_.data(), n);
+            previousSize_ = n;
+        }
+        table_.weightOffsets.push_back(previousOffset_);
+    }
+    // Appends the stencils of a finished table built for the children that follow, interning
+    // its pool's sequences in first-use order: the result equals a serial build's exactly.
+    void append(const StencilTable& part) {
+        const int base = int(table_.indices.size());
+        remap_.assign(part.weights.size() + 1, -1);  // + 1: an empty sequence may sit at the end
+        for (int i = 0; i < part.numStencils(); ++i) {
+            int& global = remap_[part.weightOffsets[i]];
+            if (global < 0) global = pool_.intern(part.weightsOf(i), part.size(i));
+            table_.weightOffsets.push_back(global);
+            table_.offsets.push_back(base + part.offsets[i + 1]);
+        }
+        table_.indices.insert(table_.indices.end(), part.indices.begin(), part.indices.end());
+    }
+    void finish() { table_.weights = pool_.takeWeights(); }
+
+private:
+    StencilTable& table_;
+    WeightPool pool_;
+    std::vector<float> maskWeights_;  // the current mask's weights before interning
+    std::vector<int> remap_;          // a part's pool offsets -> this pool's
+    int previousOffset_ = -1;         // where the last mask's weights sit in the pool
+    int previousSize_ = 0;
+
+    bool sameAsPrevious(int n) const {
+        if (previousOffset_ < 0 || n != previousSize_) return false;
+        const float* previous = pool_.weights().data() + previousOffset_;
+        for (int k = 0; k < n; ++k)
+            if (bitsOf(maskWeights_[k]) != bitsOf(previous[k])) return false;
+        return true;
+    }
+    static std::uint32_t bitsOf(float w) {
+        std::uint32_t bits;
+        std::memcpy(&bits, &w, sizeof bits);
+        return bits;
+    }
+};
+
+// What every worker of a level reads.
+struct LevelInputs {
+    const Topology& t;
+    const ChildNumbering& num;
+    const Options& options;
+    std::vector<int> faceOfPoint;           // parent face of each face point
+    std::vector<float> childEdgeSharpness;  // per (vertex, incident edge), parallel to t.vertEdges
+    bool smooth;  // no sharp edge or vertex in the level (closed, uncreased): no crease rule applies
+};
+
+// One worker's state: the accumulator and the scheme hooks hold per-mask scratch, so each
+// worker has its own.
+struct Worker {
+    SparseAccumulator acc;
+    std::optional<SchaeferWarrenMasks> unzipped;
+    std::optional<CatmarkButterflyMasks> butterfly;
+    Level level;
+    std::vector<float> parentEdgeSharpness;  // per incident edge of the current vertex
+
+    Worker(const Topology& t, const Options& options) : acc(t.numVertices), level{t, acc, nullptr, nullptr} {
+        if (options.scheme == Scheme::SchaeferWarren) level.unzipped = &unzipped.emplace(t, acc);
+        if (options.scheme == Scheme::CatmarkButterfly) level.butterfly = &butterfly.emplace(t, acc);
+    }
+};
+
+void edgeMask(const LevelInputs& in, Worker& w, int e) {
+    const Topology& t = in.t;
+    // The edge point is a crease point when both child halves stay sharp. Uniform decay keeps
+    // them sharp exactly when s > 1 (s = 1 blends with weight 1, the same point); Chaikin can
+    // smooth the children of an edge with s > 1 next to weaker creases, and the blend then
+    // uses s unclamped, as OpenSubdiv does.
+    if (in.smooth) return w.level.edgeSmooth(e, 1.0);
+    const float s = t.edgeSharpness[e];
+    bool sharp = in.options.scheme == Scheme::Bilinear || isInfinite(s) || t.edgeFaceCount(e) != 2;
+    if (!sharp && isSharp(s)) {
+        sharp = in.options.creaseMethod == CreaseMethod::Uniform
+                    ? s >= 1.0f
+                    : childSharpnessAt(t, in.childEdgeSharpness, t.edgeVerts[2 * e], e) > 0.0f &&
+                          childSharpnessAt(t, in.childEdgeSharpness, t.edgeVerts[2 * e + 1], e) > 0.0f;
+    }
+    if (sharp) {
+        w.level.edgeSharp(e, 1.0);
+    } else if (!isSharp(s)) {
+        w.level.edgeSmooth(e, 1.0);
+    } else {  // semi-sharp edge whose children are smooth: blend by the parent sharpness
+        w.level.edgeSharp(e, s);
+        w.level.edgeSmooth(e, 1.0 - s);
+    }
+}
+
+void vertexMask(const LevelInputs& in, Worker& w, int v) {
+    const Topology& t = in.t;
+    if (in.options.scheme == Scheme::Bilinear) return w.acc.add(v, 1.0);
+    if (in.smooth) return w.level.vertexRule(v, VertexRule::Smooth, nullptr, 1.0);
+    const int n = t.vertexEdgeCount(v), begin = t.vertEdgeOffsets[v];
+    std::vector<float>& parentSharpness = w.parentEdgeSharpness;
+    parentSharpness.resize(n);
+    for (int i = 0; i < n; ++i) parentSharpness[i] = t.edgeSharpness[t.vertEdges[begin + i]];
+    const float* childSharpness = &in.childEdgeSharpness[begin];
+    const float pVertex = t.vertSharpness[v], cVertex = decrementSharpness(pVertex);
+    const VertexRule pRule = vertexRule(pVertex, countSharp(parentSharpness.data(), n));
+    const VertexRule cRule = vertexRule(cVertex, countSharp(childSharpness, n));
+    if (pRule == VertexRule::Smooth || pRule == VertexRule::Dart || pRule == cRule) {
+        w.level.vertexRule(v, pRule, parentSharpness.data(), 1.0);
+    } else {  // the rule relaxes this level: blend the parent's and the child's masks
+        const double weight = transitionWeight(pVertex, cVertex, n, parentSharpness.data(), childSharpness);
+        w.level.vertexRule(v, pRule, parentSharpness.data(), weight);
+        w.level.vertexRule(v, cRule, childSharpness, 1.0 - weight);
+    }
+}
+
+// Masks of children [first, last) in child order (face points, edge points, vertex points).
+template <typename Table>
+void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, int last) {
+    Worker w(in.t, in.options);
+    const int edgePoints = in.num.numFacePoints, vertexPoints = edgePoints + in.t.numEdges();
+    for (int c = first; c < last; ++c) {
+        if (c < edgePoints)
+            w.level.facePoint(in.faceOfPoint[c]);
+        else if (c < vertexPoints)
+            edgeMask(in, w, c - edgePoints);
+        else
+            vertexMask(in, w, c - vertexPoints);
+        writer.append(w.acc);
+    }
+}
+
+// Children per part below which a level is not split: a part's worker setup and the copy that
+// joins it must stay small next to its masks.
+constexpr int kMinChildrenPerPart = 32768;
+
 }  // namespace
 
+// The children are split into one contiguous part per thread; the first part writes straight
+// into the table, the others into their own tables, appended in order afterwards.
 template <typename Table>
 Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options) {
     const int numChildren = num.numFacePoints + t.numEdges() + t.numVertices;
-    Table table;
-    table.numSourceVertices = t.numVertices;
-    table.sizes.reserve(numChildren);
-    table.offsets.reserve(numChildren);
+    const auto sharp = [](float s) { return isSharp(s); };
+    const bool smooth = options.scheme != Scheme::Bilinear &&
+                        std::none_of(t.edgeSharpness.begin(), t.edgeSharpness.end(), sharp) &&
+                        std::none_of(t.vertSharpness.begin(), t.vertSharpness.end(), sharp);
+    LevelInputs in{t, num, options, std::vector<int>(num.numFacePoints), {}, smooth};
+    for (int f = 0; f < t.numFaces(); ++f)
+        if (num.facePoint[f] >= 0) in.faceOfPoint[num.facePoint[f]] = f;
+    if (!smooth) {
+        in.childEdgeSharpness.resize(t.vertEdges.size());
+        for (int v = 0; v < t.numVertices; ++v)
+            childEdgeSharpnessAtVertex(t, v, options.creaseMethod, &in.childEdgeSharpness[t.vertEdgeOffsets[v]]);
+    }
+
     // Reserve an upper bound of the entries: untouched reserved pages cost nothing, while
     // growing by doubling would copy and touch the arrays several times over.
     std::size_t bound = 4 * std::size_t(t.numEdges()) + t.numVertices;
     for (int f = 0; f < t.numFaces(); ++f) bound += std::size_t(t.faceSize(f)) * (1 + 2 * t.faceSize(f));
-    table.indices.reserve(bound);
-    table.weights.reserve(bound);
-    SparseAccumulator acc(t.numVertices);
-    std::optional<SchaeferWarrenMasks> unzipped;
-    if (options.scheme == Scheme::SchaeferWarren) unzipped.emplace(t, acc);
-    Level level{t, acc, unzipped ? &*unzipped : nullptr};
-    const bool linear = options.scheme == Scheme::Bilinear;
-    auto emit = [&]() {
-        table.offsets.push_back(int(table.indices.size()));
-        table.sizes.push_back(acc.flush(table.indices, table.weights));
+    const int parts =
+        std::max(1, std::min(tbb::this_task_arena::max_concurrency(), numChildren / kMinChildrenPerPart));
+    auto split = [&](int k) { return int(std::int64_t(numChildren) * k / parts); };
+    auto partBound = [&](int k) {
+        return std::size_t(double(bound) * (split(k + 1) - split(k)) / std::max(1, numChildren)) + 64;
     };
 
-    for (int f = 0; f < t.numFaces(); ++f) {
-        if (num.facePoint[f] < 0) continue;
-        level.facePoint(f);
-        emit();
-    }
-
-    // Child sharpness of every (vertex, incident edge) pair, parallel to t.vertEdges.
-    std::vector<float> childEdgeSharpness(t.vertEdges.size());
-    for (int v = 0; v < t.numVertices; ++v)
-        childEdgeSharpnessAtVertex(t, v, options.creaseMethod, &childEdgeSharpness[t.vertEdgeOffsets[v]]);
-
-    for (int e = 0; e < t.numEdges(); ++e) {
-        // The edge point is a crease point when both child halves stay sharp. Uniform decay keeps
-        // them sharp exactly when s > 1 (s = 1 blends with weight 1, the same point); Chaikin can
-        // smooth the children of an edge with s > 1 next to weaker creases, and the blend then
-        // uses s unclamped, as OpenSubdiv does.
-        const float s = t.edgeSharpness[e];
-        bool sharp = linear || isInfinite(s) || t.edgeFaceCount(e) != 2;
-        if (!sharp && isSharp(s)) {
-            sharp = options.creaseMethod == CreaseMethod::Uniform
-                        ? s >= 1.0f
-                        : childSharpnessAt(t, childEdgeSharpness, t.edgeVerts[2 * e], e) > 0.0f &&
-                              childSharpnessAt(t, childEdgeSharpness, t.edgeVerts[2 * e + 1], e) > 0.0f;
-        }
-        if (sharp) {
-            level.edgeSharp(e, 1.0);
-        } else if (!isSharp(s)) {
-            level.edgeSmooth(e, 1.0);
-        } else {  // semi-sharp edge whose children are smooth: blend by the parent sharpness
-            level.edgeSharp(e, s);
-            level.edgeSmooth(e, 1.0 - s);
-        }
-        emit();
-    }
-
-    std::vector<float> parentEdgeSharpness;
-    for (int v = 0; v < t.numVertices; ++v) {
-        if (linear) {
-            acc.add(v, 1.0);
-            emit();
-            continue;
-        }
-        const int n = t.vertexEdgeCount(v), begin = t.vertEdgeOffsets[v];
-        parentEdgeSharpness.resize(n);
-        for (int i = 0; i < n; ++i) parentEdgeSharpness[i] = t.edgeSharpness[t.vertEdges[begin + i]];
-        const float* childSharpness = &childEdgeSharpness[begin];
-        const float pVertex = t.vertSharpness[v], cVertex = decrementSharpness(pVertex);
-        const VertexRule pRule = vertexRule(pVertex, countSharp(parentEdgeSharpness.data(), n));
-        const VertexRule cRule = vertexRule(cVertex, countSharp(childSharpness, n));
-        if (pRule == VertexRule::Smooth || pRule == VertexRule::Dart || pRule == cRule) {
-            level.vertexRule(v, pRule, parentEdgeSharpness.data(), 1.0);
-        } else {  // the rule relaxes this level: blend the parent's and the child's masks
-            const double w = transitionWeight(pVertex, cVertex, n, parentEdgeSharpness.data(), childSharpness);
-            level.vertexRule(v, pRule, parentEdgeSharpness.data(), w);
-            level.vertexRule(v, cRule, childSharpness, 1.0 - w);
-        }
-        emit();
-    }
+    Table table;
+    table.numSourceVertices = t.numVertices;
+    StencilWriter<Table> writer(table, numChildren, bound);
+    std::vector<Table> rest(parts - 1);
+    tbb::parallel_for(0, parts, [&](int k) {
+        if (k == 0) return buildRange(in, writer, 0, split(1));
+        Table& part = rest[k - 1];
+        part.numSourceVertices = t.numVertices;
+        StencilWriter<Table> partWriter(part, split(k + 1) - split(k), partBound(k));
+        buildRange(in, partWriter, split(k), split(k + 1));
+        partWriter.finish();
+    });
+    for (const Table& part : rest) writer.append(part);
+    writer.finish();
     return table;
 }
 

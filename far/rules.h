@@ -15,8 +15,8 @@ namespace quadtri {
 double stamLoopEta(int nE, int nQ, int nT);
 
 // Masks of the child vertices of `parent`, in the child order of `numbering`.
-// Masks are accumulated in double; Table is StencilTable (float weights, what the Refiner
-// stores) or StencilTableD (double weights, for exact tests and composition).
+// Masks are accumulated in double; Table is StencilTable (float weights, pooled: what the
+// Refiner stores) or StencilTableD (double weights, for exact tests and composition).
 template <typename Table>
 Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering, const Options& options);
 

@@ -1,30 +1,46 @@
-// Conversion of built (double) tables to stored (float) ones, and composition of per-level
-// tables into factorized ones.
+// Conversion of built (double) tables to stored (float, weight-pooled) ones and back, and
+// composition of per-level tables into factorized ones.
 #include "far/stencil_table.h"
 
 #include "far/sparse_accumulator.h"
+#include "far/weight_pool.h"
 
 namespace quadtri {
 
-namespace {
-
-// The same CSR arrays with the weights converted.
-template <typename Out, typename In>
-Out convertWeights(const In& in) {
-    Out out;
-    out.numSourceVertices = in.numSourceVertices;
-    out.sizes = in.sizes;
-    out.offsets = in.offsets;
-    out.indices = in.indices;
-    out.weights.assign(in.weights.begin(), in.weights.end());
+StencilTable toFloatTable(const StencilTableD& d) {
+    StencilTable out;
+    out.numSourceVertices = d.numSourceVertices;
+    const int n = int(d.sizes.size());
+    out.offsets.reserve(std::size_t(n) + 1);
+    out.weightOffsets.reserve(n);
+    out.indices.reserve(d.indices.size());
+    WeightPool pool;
+    std::vector<float> rounded;  // one stencil's weights, reused
+    for (int i = 0; i < n; ++i) {
+        const auto first = std::size_t(d.offsets[i]), last = first + std::size_t(d.sizes[i]);
+        out.indices.insert(out.indices.end(), d.indices.begin() + first, d.indices.begin() + last);
+        out.offsets.push_back(int(out.indices.size()));
+        rounded.assign(d.weights.begin() + first, d.weights.begin() + last);
+        out.weightOffsets.push_back(pool.intern(rounded.data(), d.sizes[i]));
+    }
+    out.weights = pool.takeWeights();
     return out;
 }
 
-}  // namespace
-
-StencilTable toFloatTable(const StencilTableD& d) { return convertWeights<StencilTable>(d); }
-
-StencilTableD toDoubleTable(const StencilTable& t) { return convertWeights<StencilTableD>(t); }
+StencilTableD toDoubleTable(const StencilTable& t) {
+    StencilTableD out;
+    out.numSourceVertices = t.numSourceVertices;
+    const int n = t.numStencils();
+    out.sizes.reserve(n);
+    out.offsets.assign(t.offsets.begin(), t.offsets.end() - 1);
+    out.indices = t.indices;
+    out.weights.reserve(t.indices.size());
+    for (int i = 0; i < n; ++i) {
+        out.sizes.push_back(t.size(i));
+        out.weights.insert(out.weights.end(), t.weightsOf(i), t.weightsOf(i) + t.size(i));
+    }
+    return out;
+}
 
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner) {
     StencilTableD result;

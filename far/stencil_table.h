@@ -1,4 +1,5 @@
-// Sparse stencil tables in CSR form: refined vertex i = sum_k weights[offsets[i]+k] * src[indices[offsets[i]+k]].
+// Sparse stencil tables: refined vertex i = sum_k w_i[k] * src[indices[offsets[i] + k]] for
+// k < size(i), with w_i = weightsOf(i).
 #pragma once
 
 #include <cstddef>
@@ -6,23 +7,29 @@
 
 namespace quadtri {
 
+// What the evaluators read. Indices are CSR; the weights live in a pool in which identical
+// sequences are stored once (WeightPool), each stencil pointing at its own. After a level or two
+// nearly every stencil is one of a handful of regular masks, so the pool stays a few cache lines
+// and the table costs 4 bytes per entry and 8 per stencil instead of 8 and 8 (OpenSubdiv's layout).
 struct StencilTable {
-    int numSourceVertices = 0;  // size of the vertex set the indices point into
-    std::vector<int> sizes;     // entries per stencil
-    std::vector<int> offsets;   // first entry of each stencil
-    std::vector<int> indices;   // source vertex of each entry
-    std::vector<float> weights; // weight of each entry
+    int numSourceVertices = 0;       // size of the vertex set the indices point into
+    std::vector<int> offsets{0};     // numStencils() + 1: stencil i's entries are [offsets[i], offsets[i+1])
+    std::vector<int> indices;        // source vertex of each entry
+    std::vector<int> weightOffsets;  // per stencil: its size(i) weights start at weights[weightOffsets[i]]
+    std::vector<float> weights;      // the pool, shared by stencils with bitwise-equal weights
 
-    int numStencils() const { return int(sizes.size()); }
+    int numStencils() const { return int(weightOffsets.size()); }
+    int size(int i) const { return offsets[i + 1] - offsets[i]; }
+    const float* weightsOf(int i) const { return weights.data() + weightOffsets[i]; }
     std::size_t numEntries() const { return indices.size(); }
     // Bytes of the four arrays.
     std::size_t bytes() const {
-        return sizes.size() * sizeof(int) + offsets.size() * sizeof(int) + indices.size() * sizeof(int) +
-               weights.size() * sizeof(float);
+        return (offsets.size() + indices.size() + weightOffsets.size()) * sizeof(int) + weights.size() * sizeof(float);
     }
 };
 
-// The same table with double weights: how the analyzer builds and composes tables.
+// A plain CSR table with double weights, one per entry: how the analyzer builds and composes
+// tables (stencil i's entries are [offsets[i], offsets[i] + sizes[i])).
 struct StencilTableD {
     int numSourceVertices = 0;
     std::vector<int> sizes;
@@ -31,7 +38,8 @@ struct StencilTableD {
     std::vector<double> weights;
 };
 
-// The float table stored for evaluation, and back.
+// The float table stored for evaluation (weights rounded to float, then interned), and back to
+// plain CSR.
 StencilTable toFloatTable(const StencilTableD& table);
 StencilTableD toDoubleTable(const StencilTable& table);
 

@@ -11,6 +11,7 @@ const char* toString(Scheme scheme) {
     case Scheme::Bilinear: return "bilinear";
     case Scheme::StamLoop: return "stam-loop";
     case Scheme::SchaeferWarren: return "schaefer-warren";
+    case Scheme::CatmarkButterfly: return "catmark-butterfly";
     }
     return "?";
 }

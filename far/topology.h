@@ -57,6 +57,13 @@ struct Topology {
     int numFaceVertices() const { return int(faceVerts.size()); }
 };
 
+// How much of a child level to build. A level that is not refined further needs only its faces
+// (to draw or write them); its edges, incidences, flags and sharpness are several times the cost.
+enum class TopologyDetail {
+    Full,       // faces, edges, incidences, flags and sharpness
+    FacesOnly,  // numVertices, faceOffsets, faceVerts and faceHole; every other array empty
+};
+
 // Per-vertex face-type counts: incident quad-like faces (4 or more corners) and triangles.
 struct VertexFaceCounts {
     int quads = 0;

@@ -1,13 +1,14 @@
 // The one stencil loop. Serial, threaded and (mirrored in GLSL) Vulkan evaluators all run it:
-// dst[i] = sum_k weights[offsets[i]+k] * src[indices[offsets[i]+k]] for i in [start, end).
+// dst[i] = sum_k w[k] * src[indices[offsets[i]+k]] for k < offsets[i+1] - offsets[i] and
+// i in [start, end), with w = weights + weightOffsets[i] (the weight pool of StencilTable).
 #pragma once
 
 namespace quadtri::kernels {
 
 struct StencilArrays {
-    const int* sizes;
-    const int* offsets;
+    const int* offsets;        // numStencils + 1
     const int* indices;
+    const int* weightOffsets;  // numStencils
     const float* weights;
 };
 
@@ -17,9 +18,9 @@ inline void evalStencilsFixed(const float* src, int srcStride, float* dst, int d
                               int start, int end) {
     for (int i = start; i < end; ++i) {
         float acc[Width] = {};
-        const int* idx = t.indices + t.offsets[i];
-        const float* w = t.weights + t.offsets[i];
-        const int n = t.sizes[i];
+        const int first = t.offsets[i], n = t.offsets[i + 1] - first;
+        const int* idx = t.indices + first;
+        const float* w = t.weights + t.weightOffsets[i];
         for (int k = 0; k < n; ++k) {
             const float* s = src + static_cast<long>(idx[k]) * srcStride;
             const float wk = w[k];
@@ -36,9 +37,9 @@ inline void evalStencilsGeneric(const float* src, int srcStride, float* dst, int
     for (int i = start; i < end; ++i) {
         float* d = dst + static_cast<long>(i) * dstStride;
         for (int c = 0; c < width; ++c) d[c] = 0.0f;
-        const int* idx = t.indices + t.offsets[i];
-        const float* w = t.weights + t.offsets[i];
-        const int n = t.sizes[i];
+        const int first = t.offsets[i], n = t.offsets[i + 1] - first;
+        const int* idx = t.indices + first;
+        const float* w = t.weights + t.weightOffsets[i];
         for (int k = 0; k < n; ++k) {
             const float* s = src + static_cast<long>(idx[k]) * srcStride;
             const float wk = w[k];

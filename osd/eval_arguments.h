@@ -17,7 +17,7 @@ bool checkEvalArguments(const float* src, const BufferDescriptor& srcDesc, const
 
 // The table's arrays as the kernel reads them.
 inline kernels::StencilArrays stencilArrays(const StencilTable& table) {
-    return kernels::StencilArrays{table.sizes.data(), table.offsets.data(), table.indices.data(),
+    return kernels::StencilArrays{table.offsets.data(), table.indices.data(), table.weightOffsets.data(),
                                   table.weights.data()};
 }
 

@@ -15,7 +15,7 @@ extern const std::size_t stencil_eval_comp_words;
 namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-constexpr uint32_t kNumBindings = 6;  // sizes, offsets, indices, weights, src, dst
+constexpr uint32_t kNumBindings = 6;  // offsets, indices, weightOffsets, weights, src, dst
 constexpr uint32_t kPushConstantBytes = 4 * sizeof(uint32_t);
 
 bool envFlag(const char* name) {

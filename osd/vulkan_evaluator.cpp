@@ -109,8 +109,9 @@ void VulkanEvaluator::record(VkCommandBuffer cmd, DescriptorArena& arena, const 
 
     const VkDescriptorSet set = allocateSet(arena);
     const VkDescriptorBufferInfo infos[kBindings] = {
-        {table.sizes(), 0, VK_WHOLE_SIZE},   {table.offsets(), 0, VK_WHOLE_SIZE}, {table.indices(), 0, VK_WHOLE_SIZE},
-        {table.weights(), 0, VK_WHOLE_SIZE}, {src.buffer, srcBase, VK_WHOLE_SIZE}, {dst.buffer, dstBase, VK_WHOLE_SIZE},
+        {table.offsets(), 0, VK_WHOLE_SIZE},       {table.indices(), 0, VK_WHOLE_SIZE},
+        {table.weightOffsets(), 0, VK_WHOLE_SIZE}, {table.weights(), 0, VK_WHOLE_SIZE},
+        {src.buffer, srcBase, VK_WHOLE_SIZE},      {dst.buffer, dstBase, VK_WHOLE_SIZE},
     };
     VkWriteDescriptorSet writes[kBindings];
     for (uint32_t b = 0; b < kBindings; ++b) {

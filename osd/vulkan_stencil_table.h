@@ -16,16 +16,16 @@ public:
 
     int numStencils() const { return numStencils_; }
     int numSourceVertices() const { return numSourceVertices_; }
-    VkBuffer sizes() const { return sizes_.buffer(); }
     VkBuffer offsets() const { return offsets_.buffer(); }
     VkBuffer indices() const { return indices_.buffer(); }
+    VkBuffer weightOffsets() const { return weightOffsets_.buffer(); }
     VkBuffer weights() const { return weights_.buffer(); }
     VkDevice device() const { return device_; }
 
 private:
     VkDevice device_;
     int numStencils_ = 0, numSourceVertices_ = 0;
-    detail::DeviceBuffer sizes_, offsets_, indices_, weights_;
+    detail::DeviceBuffer offsets_, indices_, weightOffsets_, weights_;
 };
 
 }  // namespace quadtri

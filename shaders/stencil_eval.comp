@@ -1,5 +1,6 @@
 // GLSL mirror of kernels/stencil_kernel.h: one invocation per stencil,
-// dst[i] = sum_k weights[offsets[i]+k] * src[indices[offsets[i]+k]] for i in [start, end).
+// dst[i] = sum_k weights[weightOffsets[i]+k] * src[indices[offsets[i]+k]] for
+// k < offsets[i+1] - offsets[i] and i in [start, end) (identical weight sequences are pooled).
 // Stencil i writes destination element i (the CpuEvaluator contract). Compiled to SPIR-V at build
 // time and embedded in quadtri_vulkan (see shaders/embed_spirv.cmake).
 #version 450
@@ -9,9 +10,9 @@ layout(constant_id = 1) const int LENGTH = 3;  // floats evaluated per element
 layout(constant_id = 2) const int SRC_STRIDE = 3;
 layout(constant_id = 3) const int DST_STRIDE = 3;
 
-layout(std430, set = 0, binding = 0) readonly buffer Sizes { int sizes[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Offsets { int offsets[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Indices { int indices[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Offsets { int offsets[]; };  // numStencils + 1
+layout(std430, set = 0, binding = 1) readonly buffer Indices { int indices[]; };
+layout(std430, set = 0, binding = 2) readonly buffer WeightOffsets { int weightOffsets[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Weights { float weights[]; };
 // src and dst may be the same buffer (all levels in one): different elements, so not restrict.
 layout(std430, set = 0, binding = 4) readonly buffer Src { float src[]; };
@@ -30,10 +31,11 @@ void main() {
     float acc[LENGTH];
     for (int c = 0; c < LENGTH; ++c) acc[c] = 0.0;
     const int first = offsets[i];
-    const int n = sizes[i];
+    const int n = offsets[i + 1] - first;
+    const int firstWeight = weightOffsets[i];
     for (int k = 0; k < n; ++k) {
         const uint s = pc.srcOffset + uint(indices[first + k]) * uint(SRC_STRIDE);
-        const float w = weights[first + k];
+        const float w = weights[firstWeight + k];
         for (int c = 0; c < LENGTH; ++c) acc[c] += w * src[s + uint(c)];
     }
     const uint d = pc.dstOffset + i * uint(DST_STRIDE);

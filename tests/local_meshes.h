@@ -222,10 +222,7 @@ inline int childOfVertex(const Topology& t, int v) {
 // Stencil i of `table` as dense weights over its source vertices (repeated indices summed).
 inline std::vector<double> denseStencil(const StencilTable& table, int i) {
     std::vector<double> w(size_t(table.numSourceVertices), 0.0);
-    for (int k = 0; k < table.sizes[i]; ++k) {
-        const int j = table.offsets[i] + k;
-        w.at(size_t(table.indices[j])) += table.weights[j];
-    }
+    for (int k = 0; k < table.size(i); ++k) w.at(size_t(table.indices[table.offsets[i] + k])) += table.weightsOf(i)[k];
     return w;
 }
 

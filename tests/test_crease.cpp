@@ -52,7 +52,7 @@ Refiner refineGrid(const Grid& g, const std::vector<Crease>& creases, CreaseMeth
     Options options;
     options.creaseMethod = method;
     Refiner refiner(d, options);
-    refiner.refineUniform(levels);
+    refiner.refineUniform(levels, TopologyDetail::Full);
     return refiner;
 }
 

@@ -46,10 +46,10 @@ std::vector<float> affine(const std::vector<float>& xyz) {
 std::vector<double> apply(const StencilTable& table, const std::vector<float>& control) {
     std::vector<double> out(size_t(table.numStencils()) * 3, 0.0);
     for (int i = 0; i < table.numStencils(); ++i)
-        for (int k = 0; k < table.sizes[i]; ++k) {
+        for (int k = 0; k < table.size(i); ++k) {
             const int j = table.offsets[i] + k;
             for (int c = 0; c < 3; ++c)
-                out[3 * i + c] += double(table.weights[j]) * control[3 * table.indices[j] + c];
+                out[3 * i + c] += double(table.weightsOf(i)[k]) * control[3 * table.indices[j] + c];
         }
     return out;
 }
@@ -58,19 +58,20 @@ std::vector<double> apply(const StencilTable& table, const std::vector<float>& c
 double checkTable(const StencilTable& table, int numSource, int numStencils, const std::string& what) {
     EXPECT_EQ(table.numSourceVertices, numSource) << what;
     EXPECT_EQ(table.numStencils(), numStencils) << what;
-    EXPECT_EQ(table.offsets.size(), table.sizes.size()) << what;
-    EXPECT_EQ(table.weights.size(), table.indices.size()) << what;
+    EXPECT_EQ(table.offsets.size(), table.weightOffsets.size() + 1) << what;
+    EXPECT_EQ(size_t(table.offsets.back()), table.indices.size()) << what;
     double worst = 0;
     int badIndex = 0, badWeight = 0;
     for (int i = 0; i < table.numStencils(); ++i) {
         double sum = 0;
-        for (int k = 0; k < table.sizes[i]; ++k) {
+        for (int k = 0; k < table.size(i); ++k) {
             const int j = table.offsets[i] + k;
             if (table.indices[j] < 0 || table.indices[j] >= numSource)
                 ++badIndex;
-            if (!std::isfinite(table.weights[j]))
+            const float w = table.weightsOf(i)[k];
+            if (!std::isfinite(w))
                 ++badWeight;
-            sum += table.weights[j];
+            sum += w;
         }
         worst = std::max(worst, std::fabs(sum - 1.0));
     }

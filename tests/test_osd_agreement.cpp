@@ -1,5 +1,6 @@
 // quadtri against OpenSubdiv on OpenSubdiv's own regression shapes (tests/meshes/osd):
-// pure-quad catmark_* shapes must refine exactly as OpenSubdiv's Catmark, loop_* shapes as its
+// pure-quad catmark_* shapes must refine exactly as OpenSubdiv's Catmark (under every smooth
+// scheme, catmark-butterfly included), loop_* shapes as its
 // Loop, bilinear_cube as its Bilinear. Vertices are matched by position (the two libraries order
 // refined vertices differently); on a mismatch the failure message lists, per kind of child
 // (face / edge / vertex point), which quadtri child differs from OpenSubdiv's child of the same
@@ -92,6 +93,7 @@ std::vector<ShapeCase> osdCases() {
         if (startsWith(shape, "catmark_")) {
             if (stats.triangles > 0) continue;  // Catmark and Stam-Loop differ on triangles by design
             c.reference = OsdScheme::Catmark;
+            ours.push_back(Scheme::CatmarkButterfly);  // Catmull-Clark wherever there is no triangle
         } else if (startsWith(shape, "loop_")) {
             c.reference = OsdScheme::Loop;
         } else if (shape == "bilinear_cube") {

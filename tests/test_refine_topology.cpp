@@ -57,7 +57,7 @@ TEST(RefineTopology, ChildLevelsEqualTheGenericBuilder) {
         const io::ObjMesh mesh = io::readObj(meshPath(name));
         const int levels = mesh.numFaces() > 500 ? 1 : 2;
         Refiner refiner(mesh.descriptor(), mesh.applyTags(Options()));
-        refiner.refineUniform(levels);
+        refiner.refineUniform(levels, TopologyDetail::Full);
         for (int L = 1; L <= levels; ++L) expectSameConnectivity(refiner.level(L), name + " level " + std::to_string(L));
     }
 }
@@ -81,6 +81,31 @@ TEST(RefineTopology, HalvesOfParentEdgesCarryTheirSharpness) {
         }
     EXPECT_GT(sharpHalves, 0);
     for (int e = 2 * p.numEdges(); e < c.numEdges(); ++e) EXPECT_EQ(c.edgeSharpness[e], 0.0f);
+}
+
+// The last level is faces only by default (as OpenSubdiv's fullTopologyInLastLevel = false);
+// its faces equal the full build's, and refining further or asking for Full completes it.
+TEST(RefineTopology, FacesOnlyLastLevelCompletesOnDemand) {
+    for (const std::string name : {"osd/catmark_chaikin0.obj", "mixed/cylinder_capped_creased.obj"}) {
+        const io::ObjMesh mesh = io::readObj(meshPath(name));
+        const Options options = mesh.applyTags(Options());
+        Refiner full(mesh.descriptor(), options), lazy(mesh.descriptor(), options);
+        full.refineUniform(2, TopologyDetail::Full);
+        lazy.refineUniform(1);
+        const Topology& minimal = lazy.level(1);
+        EXPECT_EQ(minimal.faceVerts, full.level(1).faceVerts) << name;
+        EXPECT_EQ(minimal.faceHole, full.level(1).faceHole) << name;
+        EXPECT_EQ(minimal.numVertices, full.level(1).numVertices) << name;
+        EXPECT_TRUE(minimal.edgeVerts.empty() && minimal.faceEdges.empty() && minimal.vertEdges.empty()) << name;
+
+        lazy.refineUniform(2);  // level 1 becomes a parent: it is completed first
+        expectSameConnectivity(lazy.level(1), name + " level 1 completed");
+        EXPECT_EQ(lazy.level(1).edgeSharpness, full.level(1).edgeSharpness) << name;
+        EXPECT_EQ(toDoubleTable(lazy.levelStencils(2)).weights, toDoubleTable(full.levelStencils(2)).weights) << name;
+        lazy.refineUniform(2, TopologyDetail::Full);
+        expectSameConnectivity(lazy.level(2), name + " level 2 completed");
+        EXPECT_EQ(lazy.level(2).vertSharpness, full.level(2).vertSharpness) << name;
+    }
 }
 
 }  // namespace

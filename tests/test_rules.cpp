@@ -9,9 +9,14 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
+#include "far/refine_topology.h"
 #include "far/refiner.h"
+#include "far/rules.h"
 #include "tests/local_meshes.h"
 #include "tests/rule_oracles.h"
+#include "tests/test_support.h"
 
 namespace {
 
@@ -242,6 +247,52 @@ TEST(BilinearRules, CornersMidpointsCentroids) {
     const std::vector<double> face = denseStencil(refiner.levelStencils(1), childOfFace(t, 0));
     for (int i = 0; i < 5; ++i)
         EXPECT_NEAR(face[i], 0.2, kWeightTol);
+}
+
+// Large levels are built in parts, one per thread, joined in child order: the joined table must
+// equal the one-part build exactly (same entries, same pool, same offsets), whatever the number
+// of parts, for every scheme hook and with creases.
+TEST(LevelStencils, PartsJoinToTheSerialTable) {
+    const struct {
+        const char* mesh;
+        Scheme scheme;
+        int parentLevel;
+    } cases[] = {{"mixed/mixed_torus.obj", Scheme::SchaeferWarren, 4},
+                 {"mixed/mixed_torus.obj", Scheme::CatmarkButterfly, 4},
+                 {"mixed/cylinder_capped_creased.obj", Scheme::StamLoop, 5}};
+    for (const auto& c : cases) {
+        const io::ObjMesh mesh = io::readObj(meshPath(c.mesh));
+        Options options;
+        options.scheme = c.scheme;
+        options.creaseMethod = CreaseMethod::Chaikin;
+        Refiner refiner(mesh.descriptor(), mesh.applyTags(options));
+        refiner.refineUniform(c.parentLevel, TopologyDetail::Full);
+        const Topology& parent = refiner.level(c.parentLevel);
+        const ChildNumbering numbering = numberChildren(parent);
+        const std::string where = std::string(c.mesh) + " " + toString(c.scheme);
+        const int children = numbering.numFacePoints + parent.numEdges() + parent.numVertices;
+        ASSERT_GE(children, 65536) << where << ": too small to be split";
+
+        auto build = [&](int threads) {
+            tbb::task_arena arena(threads);
+            std::pair<StencilTable, StencilTableD> tables;
+            arena.execute([&] {
+                tables.first = buildLevelStencils<StencilTable>(parent, numbering, refiner.options());
+                tables.second = buildLevelStencils<StencilTableD>(parent, numbering, refiner.options());
+            });
+            return tables;
+        };
+        const auto serial = build(1), split = build(4);
+        EXPECT_EQ(serial.first.numStencils(), children) << where;
+        EXPECT_EQ(serial.first.offsets, split.first.offsets) << where;
+        EXPECT_EQ(serial.first.indices, split.first.indices) << where;
+        EXPECT_EQ(serial.first.weightOffsets, split.first.weightOffsets) << where;
+        EXPECT_EQ(serial.first.weights, split.first.weights) << where;
+        EXPECT_EQ(serial.second.offsets, split.second.offsets) << where;
+        EXPECT_EQ(serial.second.sizes, split.second.sizes) << where;
+        EXPECT_EQ(serial.second.indices, split.second.indices) << where;
+        EXPECT_EQ(serial.second.weights, split.second.weights) << where;
+    }
 }
 
 }  // namespace

@@ -323,7 +323,7 @@ struct QuadraticResult {
 QuadraticResult quadraticGeneration(Scheme scheme) {
     const io::ObjMesh mesh = io::readObj(meshPath("mixed/split_plane.obj"));
     Refiner refiner(mesh.descriptor(), mesh.applyTags(schemeOptions(scheme)));
-    refiner.refineUniform(1);
+    refiner.refineUniform(1, TopologyDetail::Full);
     const StencilTableD table = doubleLevelTable(refiner, 1);
     const Topology& fine = refiner.level(1);
     EXPECT_EQ(int(table.sizes.size()), fine.numVertices);
@@ -413,9 +413,9 @@ TEST_P(SchaeferWarrenMixed, RefinesToLevel4) {
         int badSum = 0, badWeight = 0, badIndex = 0;
         double worst = 0;
         for (int i = 0; i < table.numStencils(); ++i) {
-            for (int k = 0; k < table.sizes[i]; ++k) {
+            for (int k = 0; k < table.size(i); ++k) {
                 const int j = table.offsets[i] + k;
-                if (!std::isfinite(table.weights[size_t(j)])) ++badWeight;
+                if (!std::isfinite(table.weightsOf(i)[k])) ++badWeight;
                 if (table.indices[size_t(j)] < 0 || table.indices[size_t(j)] >= table.numSourceVertices) ++badIndex;
             }
             const double error = std::fabs(stencilWeightSum(table, i) - 1.0);
@@ -491,8 +491,8 @@ TEST(SchaeferWarrenVsStamLoop, EqualOnPureMeshes) {
         // The masks themselves, in double, level by level over the same topology.
         Refiner sw(mesh.descriptor(), mesh.applyTags(schemeOptions(Scheme::SchaeferWarren)));
         Refiner sl(mesh.descriptor(), mesh.applyTags(schemeOptions(Scheme::StamLoop)));
-        sw.refineUniform(c.level - 1);
-        sl.refineUniform(c.level - 1);
+        sw.refineUniform(c.level - 1, TopologyDetail::Full);  // level c.level - 1 is a parent below
+        sl.refineUniform(c.level - 1, TopologyDetail::Full);  // level c.level - 1 is a parent below
         double weights = 0;
         for (int L = 1; L <= c.level; ++L) {
             const StencilTableD a = doubleLevelTable(sw, L), b = doubleLevelTable(sl, L);

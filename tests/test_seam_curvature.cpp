@@ -186,7 +186,7 @@ TEST(Curvature, JumpAcrossTheSeamOfMixedTorus) {
     std::map<Scheme, std::map<int, Row>> rows;
     for (Scheme scheme : {Scheme::SchaeferWarren, Scheme::StamLoop}) {
         Refiner refiner(mesh.descriptor(), mesh.applyTags(schemeOptions(scheme)));
-        refiner.refineUniform(kLast);
+        refiner.refineUniform(kLast, TopologyDetail::Full);
         std::vector<double> pos(mesh.positions.begin(), mesh.positions.end());
         for (int L = 1; L <= kLast; ++L) {
             const StencilTableD table = doubleLevelTable(refiner, L);

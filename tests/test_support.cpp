@@ -17,7 +17,7 @@ RefinedMesh refineMesh(const std::string& relative, int maxLevel, Options option
     r.mesh = io::readObj(meshPath(relative));
     r.options = r.mesh.applyTags(options);
     r.refiner = std::make_unique<Refiner>(r.mesh.descriptor(), r.options);
-    r.refiner->refineUniform(maxLevel);
+    r.refiner->refineUniform(maxLevel, TopologyDetail::Full);  // tests read every level's connectivity
     r.positions = evaluateLevels(*r.refiner, r.mesh.positions, 3);
     return r;
 }
@@ -52,7 +52,7 @@ double boundingBoxDiagonal(const std::vector<float>& xyz) {
 
 double stencilWeightSum(const StencilTable& table, int i) {
     double sum = 0;
-    for (int k = 0; k < table.sizes[i]; ++k) sum += table.weights[table.offsets[i] + k];
+    for (int k = 0; k < table.size(i); ++k) sum += table.weightsOf(i)[k];
     return sum;
 }
 
@@ -74,10 +74,11 @@ std::string testNameOf(std::string text) {
 StencilTable handCheckedTable() {
     StencilTable t;
     t.numSourceVertices = 4;
-    t.sizes = {2, 1, 4};
-    t.offsets = {0, 2, 3};
+    t.offsets = {0, 2, 3, 7};
     t.indices = {0, 1, 3, 0, 1, 2, 3};
-    t.weights = {0.5f, 0.5f, 1.0f, 0.25f, 0.25f, 0.25f, 0.25f};
+    // Pool order differs from stencil order, so evaluators must follow weightOffsets.
+    t.weightOffsets = {4, 6, 0};
+    t.weights = {0.25f, 0.25f, 0.25f, 0.25f, 0.5f, 0.5f, 1.0f};
     return t;
 }
 

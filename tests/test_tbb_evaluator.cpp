@@ -120,7 +120,8 @@ std::string testName(const ::testing::TestParamInfo<std::string>& info) { return
 
 INSTANTIATE_TEST_SUITE_P(AllMeshes, TbbEvaluatorMeshes, ::testing::ValuesIn(allMeshes()), testName);
 
-// A table large enough to be split into many blocks: stencils of 1..24 random entries.
+// A table large enough to be split into many blocks: stencils of 1..24 random entries, each
+// with weights of its own in the pool.
 StencilTable randomTable(int numStencils, int numSources) {
     std::mt19937 rng(12345);
     std::uniform_int_distribution<int> size(1, 24), vertex(0, numSources - 1);
@@ -128,12 +129,13 @@ StencilTable randomTable(int numStencils, int numSources) {
     StencilTable t;
     t.numSourceVertices = numSources;
     for (int i = 0; i < numStencils; ++i) {
-        t.sizes.push_back(size(rng));
-        t.offsets.push_back(int(t.indices.size()));
-        for (int k = 0; k < t.sizes.back(); ++k) {
+        t.weightOffsets.push_back(int(t.weights.size()));
+        const int n = size(rng);
+        for (int k = 0; k < n; ++k) {
             t.indices.push_back(vertex(rng));
             t.weights.push_back(weight(rng));
         }
+        t.offsets.push_back(int(t.indices.size()));
     }
     return t;
 }

@@ -125,7 +125,7 @@ int runInfo(const InfoArgs& args) {
     std::printf("%s\n", args.mesh.input.c_str());
     printBase(refiner.level(0), options);
 
-    refiner.refineUniform(args.level);
+    refiner.refineUniform(args.level, TopologyDetail::Full);  // the table counts sharp edges of every level
     std::printf("\n| level | vertices | faces | sharp edges | stencils | level table bytes | factorized table bytes |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int L = 0; L <= args.level; ++L) {

@@ -29,7 +29,8 @@ CLI::Validator oneOf(const std::map<std::string, T>& names, const std::string& w
 void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
     static const std::map<std::string, Scheme> schemes{{"schaefer-warren", Scheme::SchaeferWarren},
                                                        {"stam-loop", Scheme::StamLoop},
-                                                       {"bilinear", Scheme::Bilinear}};
+                                                       {"bilinear", Scheme::Bilinear},
+                                                       {"catmark-butterfly", Scheme::CatmarkButterfly}};
     static const std::map<std::string, BoundaryInterpolation> boundaries{
         {"edge-only", BoundaryInterpolation::EdgeOnly},
         {"edge-and-corner", BoundaryInterpolation::EdgeAndCorner},

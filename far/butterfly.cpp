@@ -1,0 +1,258 @@
+// Surface rules of catmark-butterfly (see butterfly.h). Every weight below is either Butterfly's
+// or Zorin's, or was derived by docs/catmark_butterfly/derive_seam_rules.py.
+#include "far/butterfly.h"
+
+#include <cmath>
+
+namespace quadtri {
+
+namespace {
+
+bool edgeHasQuad(const Topology& t, int e) {
+    for (int k = t.edgeFaceOffsets[e]; k < t.edgeFaceOffsets[e + 1]; ++k)
+        if (t.faceSize(t.edgeFaces[k]) != 3) return true;
+    return false;
+}
+
+// Valence of a vertex whose faces close a manifold fan around it, else 0 (Zorin's rule needs the
+// whole ring).
+int closedFanValence(const Topology& t, int v) {
+    if (t.vertFlags[v] & (kVertexBoundary | kVertexNonManifold)) return 0;
+    return t.vertexEdgeCount(v);
+}
+
+}  // namespace
+
+CatmarkButterflyMasks::CatmarkButterflyMasks(const Topology& topology, SparseAccumulator& accumulator)
+    : t_(topology), acc_(accumulator), kind_(size_t(topology.numVertices)) {
+    for (int v = 0; v < t_.numVertices; ++v) kind_[size_t(v)] = classify(v);
+}
+
+CatmarkButterflyMasks::Kind CatmarkButterflyMasks::classify(int v) const {
+    int quads = 0, triangles = 0, ngons = 0, seamEdges = 0;
+    for (int i = t_.vertFaceOffsets[v]; i < t_.vertFaceOffsets[v + 1]; ++i) {
+        const int n = t_.faceSize(t_.vertFaces[i]);
+        (n == 3 ? triangles : n == 4 ? quads : ngons)++;
+    }
+    if (triangles == 0) return Kind::QuadOnly;
+    if (quads + ngons == 0) return Kind::TriangleOnly;
+    for (int i = t_.vertEdgeOffsets[v]; i < t_.vertEdgeOffsets[v + 1]; ++i)
+        seamEdges += (t_.edgeFlags[t_.vertEdges[i]] & kEdgeSeam) ? 1 : 0;
+    const bool regular = closedFanValence(t_, v) == 5 && quads == 2 && ngons == 0 && triangles == 3 && seamEdges == 2;
+    return regular ? Kind::RegularSeam : Kind::Seam;
+}
+
+// Interpolated vertices never move; crease vertices on the seam follow the curve rules, smooth
+// ones of the regular seam eq. 13. Corners and irregular smooth seam vertices keep the shared
+// rules (a fixed corner, Stam-Loop's mixed vertex rule).
+bool CatmarkButterflyMasks::touchesVertex(int v, VertexRule rule) const {
+    switch (kind_[v]) {
+    case Kind::QuadOnly: return false;
+    case Kind::TriangleOnly: return true;
+    case Kind::Seam: return rule == VertexRule::Crease;
+    case Kind::RegularSeam: return rule != VertexRule::Corner;
+    }
+    return false;
+}
+
+bool CatmarkButterflyMasks::touchesEdge(int e) const {
+    for (int k = t_.edgeFaceOffsets[e]; k < t_.edgeFaceOffsets[e + 1]; ++k)
+        if (t_.faceSize(t_.edgeFaces[k]) == 3) return true;
+    return false;
+}
+
+// A sharp edge with a quad keeps the crease midpoint: both its ends are approximated (they touch
+// the quad), and the midpoint is the cubic B-spline's rule there.
+bool CatmarkButterflyMasks::touchesSharpEdge(int e) const {
+    return t_.edgeFaceCount(e) > 0 && !edgeHasQuad(t_, e);
+}
+
+void CatmarkButterflyMasks::vertexPoint(int v, VertexRule rule, const float* edgeSharpness, double scale) {
+    if (interpolated(v)) return acc_.add(v, scale);
+    if (rule == VertexRule::Crease) return creaseVertex(v, edgeSharpness, scale);
+    seamVertex(v, scale);
+}
+
+// Eq. 13 by weight class: 9/112 per neighbour along an edge with a quad (the quad-side and the
+// two seam neighbours), 3/56 per neighbour along a triangle-only edge, 3/224 per quad's far
+// corner, 5/8 at the vertex.
+void CatmarkButterflyMasks::seamVertex(int v, double scale) {
+    acc_.add(v, scale * 5.0 / 8.0);
+    for (int i = t_.vertEdgeOffsets[v]; i < t_.vertEdgeOffsets[v + 1]; ++i) {
+        const int e = t_.vertEdges[i];
+        acc_.add(t_.otherVertex(e, v), scale * (edgeHasQuad(t_, e) ? 9.0 / 112.0 : 3.0 / 56.0));
+    }
+    for (int i = t_.vertFaceOffsets[v]; i < t_.vertFaceOffsets[v + 1]; ++i) {
+        const int f = t_.vertFaces[i], b = t_.faceOffsets[f];
+        if (t_.faceSize(f) != 4) continue;
+        int corner = 0;
+        while (t_.faceVerts[b + corner] != v) ++corner;
+        acc_.add(t_.faceVerts[b + (corner + 2) % 4], scale * 3.0 / 224.0);
+    }
+}
+
+void CatmarkButterflyMasks::smoothEdgePoint(int e, double scale) {
+    const int f0 = t_.edgeFaces[t_.edgeFaceOffsets[e]], f1 = t_.edgeFaces[t_.edgeFaceOffsets[e] + 1];
+    if (t_.faceSize(f0) == 3 && t_.faceSize(f1) == 3)
+        butterflyEdge(e, scale);
+    else
+        seamEdge(e, scale);
+}
+
+// Eq. 14: 11/28 per endpoint, 3/56 per far corner of the quad (3/28 shared by an n-gon's far
+// corners), 13/112 at the triangle's opposite vertex, −1/224 per wing.
+void CatmarkButterflyMasks::seamEdge(int e, double scale) {
+    const int a = t_.edgeVerts[2 * e], b = t_.edgeVerts[2 * e + 1];
+    acc_.add(a, scale * 11.0 / 28.0);
+    acc_.add(b, scale * 11.0 / 28.0);
+    for (int k = t_.edgeFaceOffsets[e]; k < t_.edgeFaceOffsets[e + 1]; ++k) {
+        const int f = t_.edgeFaces[k], n = t_.faceSize(f);
+        if (n == 3) {
+            const int c = thirdVertex(f, a, b);
+            acc_.add(c, scale * 13.0 / 112.0);
+            addWing(f, a, c, b, -scale / 224.0);
+            addWing(f, b, c, a, -scale / 224.0);
+            continue;
+        }
+        for (int i = t_.faceOffsets[f]; i < t_.faceOffsets[f + 1]; ++i)
+            if (t_.faceVerts[i] != a && t_.faceVerts[i] != b) acc_.add(t_.faceVerts[i], scale * 3.0 / 28.0 / (n - 2));
+    }
+}
+
+// An edge between two triangles. Both ends interpolated: Zorin at extraordinary interior ends,
+// else Butterfly, or the half Butterfly away from the seam when the plain rule's weights on seam
+// vertices do not cancel (column 1 → column 2). One end on a regular seam vertex: eqs. 11/12.
+// Every other edge with an end on the seam (irregular seams only): Butterfly, missing wings
+// reflected (the docs measure why not Zorin's rule of the interpolated end nor eqs. 11/12).
+void CatmarkButterflyMasks::butterflyEdge(int e, double scale) {
+    const int a = t_.edgeVerts[2 * e], b = t_.edgeVerts[2 * e + 1];
+    const int f0 = t_.edgeFaces[t_.edgeFaceOffsets[e]], f1 = t_.edgeFaces[t_.edgeFaceOffsets[e] + 1];
+    if (interpolated(a) && interpolated(b)) {
+        const int ka = closedFanValence(t_, a), kb = closedFanValence(t_, b);
+        const bool extraordinaryA = ka != 0 && ka != 6, extraordinaryB = kb != 0 && kb != 6;
+        if (extraordinaryA && extraordinaryB) {
+            zorinEdge(a, b, 0.5 * scale);
+            zorinEdge(b, a, 0.5 * scale);
+        } else if (extraordinaryA || extraordinaryB) {
+            zorinEdge(extraordinaryA ? a : b, extraordinaryA ? b : a, scale);
+        } else if (seamWeightOfSide(f0, a, b) == 0.0 && seamWeightOfSide(f1, a, b) == 0.0) {
+            butterfly(a, b, f0, f1, scale);
+        } else if (cleanSide(f1, a, b)) {
+            halfButterfly(a, b, f1, scale);
+        } else if (cleanSide(f0, a, b)) {
+            halfButterfly(a, b, f0, scale);
+        } else {
+            butterfly(a, b, f0, f1, scale);
+        }
+        return;
+    }
+    const int s = interpolated(a) ? b : a;
+    if (interpolated(a) != interpolated(b) && kind_[s] == Kind::RegularSeam) {
+        const bool seam0 = t_.edgeFlags[findEdge(t_, s, thirdVertex(f0, a, b))] & kEdgeSeam;
+        return seamDiagonal(s, s == a ? b : a, seam0 ? f0 : f1, seam0 ? f1 : f0, scale);
+    }
+    butterfly(a, b, f0, f1, scale);
+}
+
+void CatmarkButterflyMasks::butterfly(int a, int b, int f0, int f1, double scale) {
+    acc_.add(a, 0.5 * scale);
+    acc_.add(b, 0.5 * scale);
+    for (int f : {f0, f1}) {
+        const int c = thirdVertex(f, a, b);
+        acc_.add(c, 0.125 * scale);
+        addWing(f, a, c, b, -0.0625 * scale);
+        addWing(f, b, c, a, -0.0625 * scale);
+    }
+}
+
+// ½ a + ½ b + ¼ d − ⅛ (wings across a–d and b–d), d opposite in `f`: quadratic interpolation on
+// the regular triangle lattice that reads one side of the edge only.
+void CatmarkButterflyMasks::halfButterfly(int a, int b, int f, double scale) {
+    const int d = thirdVertex(f, a, b);
+    acc_.add(a, 0.5 * scale);
+    acc_.add(b, 0.5 * scale);
+    acc_.add(d, 0.25 * scale);
+    addWing(f, a, d, b, -0.125 * scale);
+    addWing(f, b, d, a, -0.125 * scale);
+}
+
+// Eqs. 11/12: seam vertex s, interpolated vertex t, the triangle towards the seam (opposite c, a
+// seam neighbour of s) and the one away from it (opposite d). The wing across t–c has weight 0.
+void CatmarkButterflyMasks::seamDiagonal(int s, int t, int towardsSeam, int away, double scale) {
+    const int c = thirdVertex(towardsSeam, s, t), d = thirdVertex(away, s, t);
+    acc_.add(s, scale * 31.0 / 80.0);
+    acc_.add(t, scale * 17.0 / 40.0);
+    acc_.add(c, scale * 3.0 / 32.0);
+    acc_.add(d, scale * 7.0 / 40.0);
+    addWing(away, s, d, t, -scale / 32.0);
+    addWing(away, t, d, s, -scale / 20.0);
+}
+
+// Zorin's modified Butterfly seen from `centre`, the ring starting at `other`: ¾ at the centre,
+// K = 3: (5/12, −1/12, −1/12), K = 4: (3/8, 0, −1/8, 0), else (¼ + cos 2πj/K + ½ cos 4πj/K)/K.
+void CatmarkButterflyMasks::zorinEdge(int centre, int other, double scale) {
+    const int valence = t_.vertexEdgeCount(centre);
+    ring_.assign(1, other);
+    int face = t_.edgeFaces[t_.edgeFaceOffsets[findEdge(t_, centre, other)]];
+    while (int(ring_.size()) < valence && face >= 0) {
+        ring_.push_back(thirdVertex(face, centre, ring_.back()));
+        face = otherFace(findEdge(t_, centre, ring_.back()), face);
+    }
+    acc_.add(centre, 0.75 * scale);
+    const int k = int(ring_.size());
+    for (int j = 0; j < k; ++j) {
+        double s;
+        if (k == 3)
+            s = j == 0 ? 5.0 / 12.0 : -1.0 / 12.0;
+        else if (k == 4)
+            s = j == 0 ? 0.375 : j == 2 ? -0.125 : 0.0;
+        else
+            s = (0.25 + std::cos(2.0 * M_PI * j / k) + 0.5 * std::cos(4.0 * M_PI * j / k)) / k;
+        acc_.add(ring_[size_t(j)], s * scale);
+    }
+}
+
+int CatmarkButterflyMasks::thirdVertex(int f, int a, int b) const {
+    for (int i = t_.faceOffsets[f]; i < t_.faceOffsets[f + 1]; ++i)
+        if (t_.faceVerts[i] != a && t_.faceVerts[i] != b) return t_.faceVerts[i];
+    return -1;
+}
+
+int CatmarkButterflyMasks::otherFace(int e, int f) const {
+    if (e < 0 || t_.edgeFaceCount(e) != 2) return -1;
+    const int first = t_.edgeFaces[t_.edgeFaceOffsets[e]];
+    return first == f ? t_.edgeFaces[t_.edgeFaceOffsets[e] + 1] : first;
+}
+
+int CatmarkButterflyMasks::wing(int f, int x, int y) const {
+    const int g = otherFace(findEdge(t_, x, y), f);
+    return g >= 0 && t_.faceSize(g) == 3 ? thirdVertex(g, x, y) : -1;
+}
+
+void CatmarkButterflyMasks::addWing(int f, int x, int y, int z, double weight) {
+    const int w = wing(f, x, y);
+    if (w >= 0) return acc_.add(w, weight);
+    acc_.add(x, weight);
+    acc_.add(y, weight);
+    acc_.add(z, -weight);
+}
+
+bool CatmarkButterflyMasks::cleanSide(int f, int a, int b) const {
+    const int d = thirdVertex(f, a, b), wa = wing(f, a, d), wb = wing(f, b, d);
+    return interpolated(d) && wa >= 0 && interpolated(wa) && wb >= 0 && interpolated(wb);
+}
+
+// The plain Butterfly's weight on seam vertices from one side (opposite vertex and wings, with
+// missing wings reflected); with both sides at 0 the seam's Q⁻ correction cancels.
+double CatmarkButterflyMasks::seamWeightOfSide(int f, int a, int b) const {
+    const int d = thirdVertex(f, a, b);
+    double sum = interpolated(d) ? 0.0 : 0.125;
+    for (int x : {a, b}) {
+        const int w = wing(f, x, d);
+        if (w >= 0 && !interpolated(w)) sum -= 0.0625;
+        if (w < 0 && !interpolated(d)) sum -= 0.0625;  // the reflection x + d − y reads d
+    }
+    return sum;
+}
+
+}  // namespace quadtri

@@ -1,0 +1,77 @@
+// Catmull-Clark on quads, Butterfly on triangles (Boumzaid et al., seed 001; DESIGN.md §5;
+// derivation and choices in docs/catmark_butterfly/). The quad side is Catmull-Clark and comes
+// from the Stam-Loop masks, which equal it wherever no triangle is involved; this class builds
+// every mask that touches a triangle:
+//   - vertices with triangles only never move (interpolation), whatever their rule;
+//   - edges between two triangles: Butterfly (½, ½, ⅛, ⅛, −1/16 × 4), Zorin's modified rule at
+//     interior extraordinary endpoints, the seam rules of eqs. 11/12 (seam → column 1) and the
+//     half Butterfly (column 1 → column 2) where the plain rule would read the seam;
+//   - seam edges (a triangle and a quad): eq. 14 (missing wings reflected); smooth seam vertices
+//     of the regular seam (2 quads, 3 triangles): eq. 13. Irregular smooth seam vertices keep
+//     Stam-Loop's mixed vertex rule (rules.cpp), the one of the choices measured in the docs whose
+//     normal jumps shrink fastest;
+//   - sharp edges and creases whose faces are triangles, and crease vertices on the seam: curve
+//     rules reproducing cubics under the curve quasi-interpolant (4-point on the triangle side,
+//     cubic B-spline on the quad side, solved in between; butterfly_curve.cpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "far/crease.h"
+#include "far/sparse_accumulator.h"
+#include "far/topology.h"
+
+namespace quadtri {
+
+class CatmarkButterflyMasks {
+public:
+    CatmarkButterflyMasks(const Topology& topology, SparseAccumulator& accumulator);
+
+    // Whether this class builds the child's mask; otherwise the shared (Catmull-Clark, and at
+    // irregular seam vertices Stam-Loop) rule of rules.cpp applies.
+    bool touchesEdge(int edge) const;        // smooth rule: a triangle on the edge
+    bool touchesSharpEdge(int edge) const;   // sharp rule: triangles only on the edge
+    bool touchesVertex(int vertex, VertexRule rule) const;
+
+    void smoothEdgePoint(int edge, double scale);
+    void sharpEdgePoint(int edge, double scale);
+    // `edgeSharpness` in vertEdges order, as the crease rule of rules.cpp reads it.
+    void vertexPoint(int vertex, VertexRule rule, const float* edgeSharpness, double scale);
+
+private:
+    // RegularSeam: a closed fan of two quads and three triangles with two seam edges, the seam of
+    // split_plane and the only configuration eqs. 11-14 were derived for.
+    enum class Kind : uint8_t { QuadOnly, Seam, RegularSeam, TriangleOnly };
+    bool interpolated(int v) const { return kind_[v] == Kind::TriangleOnly; }
+    Kind classify(int v) const;
+    void seamVertex(int v, double scale);
+    void seamEdge(int e, double scale);
+    void butterflyEdge(int e, double scale);
+    void butterfly(int a, int b, int f0, int f1, double scale);
+    void halfButterfly(int a, int b, int f, double scale);
+    void seamDiagonal(int s, int t, int towardsSeam, int away, double scale);
+    void zorinEdge(int centre, int other, double scale);
+
+    // Curve rules (butterfly_curve.cpp).
+    void creaseVertex(int v, const float* edgeSharpness, double scale);
+    int curveContinuation(int vertex, int previous) const;
+
+    int thirdVertex(int triangle, int a, int b) const;
+    int otherFace(int edge, int face) const;
+    // Vertex across edge (x, y) from `triangle`, or -1 when that face is missing or no triangle.
+    int wing(int triangle, int x, int y) const;
+    // Adds the wing across (x, y) from the triangle (x, y, z); a missing wing is replaced by the
+    // reflection x + y − z, which keeps the mask affine invariant and exact on linear data.
+    void addWing(int triangle, int x, int y, int z, double weight);
+    // A Butterfly side (the triangle's opposite corner and its two wings) with no seam vertex.
+    bool cleanSide(int triangle, int a, int b) const;
+    double seamWeightOfSide(int triangle, int a, int b) const;
+
+    const Topology& t_;
+    SparseAccumulator& acc_;
+    std::vector<Kind> kind_;
+    std::vector<int> ring_;  // scratch: a vertex's neighbours in fan order (Zorin's rule)
+};
+
+}  // namespace quadtri
