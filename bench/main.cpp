@@ -1,6 +1,7 @@
 // quadtri-bench: quadtri against OpenSubdiv on generated tori: build time, table bytes and
 // evaluation time per case, checked for agreement first, plus memcpy bandwidth for reference.
 //   quadtri-bench [--quick] [--json FILE]
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -89,19 +90,22 @@ CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, Vulk
 
 int usage(const char* message) {
     if (message) std::cerr << "quadtri-bench: " << message << "\n";
-    std::cerr << "usage: quadtri-bench [--quick] [--json FILE]\n"
+    std::cerr << "usage: quadtri-bench [--quick] [--json FILE] [--mesh NAME]\n"
                  "  --quick      CI-sized run: 100x100 tori at levels 2-3, mixed torus at level 2,\n"
                  "               3 repetitions, 32 MiB memcpy\n"
-                 "  --json FILE  also write the figures as JSON to FILE\n";
+                 "  --json FILE  also write the figures as JSON to FILE\n"
+                 "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
+                 "               torus320_tri, torus100_mixed), e.g. to profile it\n";
     return message ? 2 : 0;
 }
 
 int run(int argc, char** argv) {
     bool quick = false;
-    std::string jsonPath;
+    std::string jsonPath, onlyMesh;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--json") && i + 1 < argc) jsonPath = argv[++i];
+        else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) onlyMesh = argv[++i];
         else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return usage(nullptr);
         else return usage((std::string("unknown argument ") + argv[i]).c_str());
     }
@@ -122,7 +126,13 @@ int run(int argc, char** argv) {
     }
 
     std::map<std::pair<int, TorusFaces>, ControlMesh> meshes;
-    const std::vector<CaseSpec> cases = caseList(quick);
+    std::vector<CaseSpec> cases = caseList(quick);
+    if (!onlyMesh.empty()) {
+        cases.erase(std::remove_if(cases.begin(), cases.end(),
+                                   [&](const CaseSpec& c) { return torusName(c.n, c.faces) != onlyMesh; }),
+                    cases.end());
+        if (cases.empty()) return usage(("no case has the mesh " + onlyMesh).c_str());
+    }
     for (size_t i = 0; i < cases.size(); ++i) {
         const CaseSpec& spec = cases[i];
         auto key = std::make_pair(spec.n, spec.faces);

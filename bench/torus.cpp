@@ -20,11 +20,15 @@ double ControlMesh::boundingBoxDiagonal() const {
     return std::sqrt(d2);
 }
 
+std::string torusName(int n, TorusFaces faces) {
+    static const char* const kSuffix[] = {"quad", "tri", "mixed"};
+    return "torus" + std::to_string(n) + "_" + kSuffix[int(faces)];
+}
+
 ControlMesh makeTorus(int n, TorusFaces faces) {
     const double kMajor = 2.0, kMinor = 1.0, kTwoPi = 2.0 * std::acos(-1.0);
-    static const char* const kSuffix[] = {"quad", "tri", "mixed"};
     ControlMesh mesh;
-    mesh.name = "torus" + std::to_string(n) + "_" + kSuffix[int(faces)];
+    mesh.name = torusName(n, faces);
     mesh.numVertices = n * n;
     mesh.positions.reserve(3 * size_t(n) * n);
     for (int i = 0; i < n; ++i) {

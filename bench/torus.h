@@ -23,6 +23,9 @@ enum class TorusFaces {
     Mixed,      // the quads of every other ring (odd i) split in two, the others kept
 };
 
+// "torus100_quad", "torus320_tri", ...: the name makeTorus gives.
+std::string torusName(int n, TorusFaces faces);
+
 // A torus of n x n vertices: vertex (i, j) at angle 2 pi i / n around the major circle and
 // 2 pi j / n around the minor one. Named e.g. "torus100_quad".
 ControlMesh makeTorus(int n, TorusFaces faces);
