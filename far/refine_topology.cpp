@@ -302,15 +302,15 @@ private:
     // their edge's, face points none.
     void flags() {
         c_.edgeFlags.assign(c_.numEdges(), 0);
-        for (int e = 0; e < p_.numEdges(); ++e) c_.edgeFlags[2 * e] = c_.edgeFlags[2 * e + 1] = p_.edgeFlags[e];
         c_.vertFlags.assign(c_.numVertices, 0);
-        for (int e = 0; e < p_.numEdges(); ++e) {
+        forEach(p_.numEdges(), [&](int e) {
             const uint8_t f = p_.edgeFlags[e];
+            c_.edgeFlags[2 * e] = c_.edgeFlags[2 * e + 1] = f;
             c_.vertFlags[num_.edgePoint(e)] = (f & kEdgeBoundary ? kVertexBoundary : 0) |
                                               (f & kEdgeNonManifold ? kVertexNonManifold : 0) |
                                               (f & kEdgeSeam ? kVertexSeam : 0);
-        }
-        for (int v = 0; v < p_.numVertices; ++v) c_.vertFlags[num_.vertexPoint(v)] = p_.vertFlags[v];
+        });
+        forEach(p_.numVertices, [&](int v) { c_.vertFlags[num_.vertexPoint(v)] = p_.vertFlags[v]; });
         c_.edgeSharpness.assign(c_.numEdges(), 0.0f);
         c_.vertSharpness.assign(c_.numVertices, 0.0f);
     }
@@ -345,7 +345,11 @@ Topology refineTopology(const Topology& parent, const ChildNumbering& numbering,
                         TopologyDetail detail) {
     Topology child;
     ChildBuilder(parent, numbering, child).build(detail);
-    if (detail == TopologyDetail::Full) inheritSharpness(parent, numbering, creaseMethod, child);
+    // A level without sharpness passes none on: the child's arrays are already zero.
+    const auto sharp = [](float s) { return isSharp(s); };
+    const bool anySharp = std::any_of(parent.edgeSharpness.begin(), parent.edgeSharpness.end(), sharp) ||
+                          std::any_of(parent.vertSharpness.begin(), parent.vertSharpness.end(), sharp);
+    if (detail == TopologyDetail::Full && anySharp) inheritSharpness(parent, numbering, creaseMethod, child);
     return child;
 }
 

@@ -30,8 +30,10 @@ std::size_t Refiner::estimateLevelBytes(int L) const {
     const std::size_t vertices = facePoints + p.numEdges() + p.numVertices;
     entries += 4 * std::size_t(p.numEdges()) + p.numVertices;
     const std::size_t topologyBytes = corners * 16 + edges * 25 + vertices * 22 + faces * 5;
-    // Index and weight per entry, plus the bound reserved while building (buildLevelStencils).
-    const std::size_t tableBytes = entries * (4 + 4 + 8 + 4) + vertices * 8;
+    // An index per entry and two offsets per stencil (weights are pooled), twice over: the parts
+    // built by other threads are copied into the table (buildLevelStencils). Catmark-butterfly's
+    // masks are larger than `entries` counts; the factor 2 covers them.
+    const std::size_t tableBytes = 2 * (entries * 4 + vertices * 8);
     const std::size_t outputBytes = vertices * 3 * sizeof(float);
     return topologyBytes + tableBytes + outputBytes;
 }

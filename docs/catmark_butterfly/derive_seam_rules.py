@@ -89,6 +89,10 @@ def derive(name, support, target, equal=(), zero=()):
     assert unique
     return w
 
+def expect(weights, design):
+    """The weights DESIGN.md §5 states (and far/butterfly.cpp uses) must be the ones derived."""
+    assert list(weights) == design, f"derived {[str(w) for w in weights]}, DESIGN.md says {[str(w) for w in design]}"
+
 def check(name, support, weights, target):
     """Prints the error of a given rule on each monomial (0 = reproduced exactly)."""
     errors = []
@@ -107,20 +111,24 @@ def surface():
     print("== Surface rules at the regular seam (m = 2) ==\n")
     # Seam vertex (eq. 13): the paper's symmetry w(-1,0) = w(0,1) = w(0,-1), mirror in y.
     support = [P(-1, 1), P(-1, 0), P(-1, -1), P(0, 1), P(0, 0), P(0, -1), P(1, HALF), P(1, -HALF)]
-    derive("seam vertex (0,0), eq. 13", support, P(0, 0), equal=[(0, 2), (1, 3), (3, 5), (6, 7)])
+    w = derive("seam vertex (0,0), eq. 13", support, P(0, 0), equal=[(0, 2), (1, 3), (3, 5), (6, 7)])
+    expect(w, [F(3, 224), F(9, 112), F(3, 224), F(9, 112), F(5, 8), F(9, 112), F(3, 56), F(3, 56)])
     print()
     # Seam edge (eq. 14), mirror symmetric about y = 1/2.
     support = [P(0, 0), P(0, 1), P(-1, 0), P(-1, 1), P(1, HALF), P(1, -HALF), P(1, F(3, 2))]
-    derive("seam edge (0,0)-(0,1), eq. 14", support, P(0, HALF), equal=[(0, 1), (2, 3), (5, 6)])
+    w = derive("seam edge (0,0)-(0,1), eq. 14", support, P(0, HALF), equal=[(0, 1), (2, 3), (5, 6)])
+    expect(w, [F(11, 28), F(11, 28), F(3, 56), F(3, 56), F(13, 112), F(-1, 224), F(-1, 224)])
     print()
     # Diagonal edge seam -> column 1 (eqs. 11/12): s, t, c (seam opposite), d (other opposite),
     # wing across s-d, wing across t-d; the wing across t-c is not in the paper's support.
     support = [P(0, 0), P(1, HALF), P(0, 1), P(1, -HALF), P(0, -1), P(2, 0), P(1, F(3, 2))]
-    derive("diagonal seam -> column 1, s=(0,0) t=(1,1/2)", support, P(HALF, F(1, 4)), zero=[6])
+    w = derive("diagonal seam -> column 1, s=(0,0) t=(1,1/2)", support, P(HALF, F(1, 4)), zero=[6])
+    expect(w, [F(31, 80), F(17, 40), F(3, 32), F(7, 40), F(-1, 32), F(-1, 20), F(0)])
     print()
     # Diagonal edge column 1 -> column 2: the half butterfly on the side away from the seam.
     support = [P(1, HALF), P(2, 1), P(2, 0), P(1, -HALF), P(3, HALF)]
-    derive("diagonal column 1 -> column 2, u=(1,1/2) w=(2,1)", support, P(F(3, 2), F(3, 4)))
+    w = derive("diagonal column 1 -> column 2, u=(1,1/2) w=(2,1)", support, P(F(3, 2), F(3, 4)))
+    expect(w, [HALF, HALF, F(1, 4), F(-1, 8), F(-1, 8)])
     print()
     # Why the last rule is needed, and why the other rules near the seam need nothing special.
     butterfly = [HALF, HALF, F(1, 8), F(1, 8), F(-1, 16), F(-1, 16), F(-1, 16), F(-1, 16)]
