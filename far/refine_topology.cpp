@@ -31,9 +31,9 @@ void forEach(int count, const Body& body) {
     });
 }
 
-// Builds the child level straight from the parent: its faces, edges, incidences, flags and
-// sharpness are all known by construction, so no edge search, sort or fan walk is needed, and
-// every array is filled in parallel, each child item gathering from its parent's few neighbours.
+// Builds the child level straight from the parent: its faces, edges, incidences and flags are
+// all known by construction, so no edge search, sort or fan walk is needed, and each array is
+// filled in parallel, each child item gathering from its parent's few neighbours.
 //   child faces: a quad-like face's n quads (corner i's first), a triangle's 3 corners then middle.
 //   child edges: 2e and 2e+1 are the halves of parent edge e at edgeVerts[2e] and [2e+1]; then
 //                each parent face's interior edges: quad-like face j -> (edge point j, centre),

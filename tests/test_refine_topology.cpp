@@ -10,10 +10,8 @@
 namespace quadtri::test {
 namespace {
 
-std::vector<int> sortedRange(const std::vector<int>& values, int begin, int end) {
-    std::vector<int> out(values.begin() + begin, values.begin() + end);
-    std::sort(out.begin(), out.end());
-    return out;
+std::vector<int> range(const std::vector<int>& values, int begin, int end) {
+    return std::vector<int>(values.begin() + begin, values.begin() + end);
 }
 
 void expectSameConnectivity(const Topology& direct, const std::string& where) {
@@ -34,20 +32,26 @@ void expectSameConnectivity(const Topology& direct, const std::string& where) {
                 << where << " face " << f << " corner " << i;
         }
     }
-    // Same edges with the same faces and flags.
+    // Same edges with the same faces (in the same, ascending order) and flags.
     for (int e = 0; e < direct.numEdges(); ++e) {
         const int g = findEdge(generic, direct.edgeVerts[2 * e], direct.edgeVerts[2 * e + 1]);
         ASSERT_GE(g, 0) << where << " edge " << e;
-        EXPECT_EQ(sortedRange(direct.edgeFaces, direct.edgeFaceOffsets[e], direct.edgeFaceOffsets[e + 1]),
-                  sortedRange(generic.edgeFaces, generic.edgeFaceOffsets[g], generic.edgeFaceOffsets[g + 1]))
+        EXPECT_EQ(range(direct.edgeFaces, direct.edgeFaceOffsets[e], direct.edgeFaceOffsets[e + 1]),
+                  range(generic.edgeFaces, generic.edgeFaceOffsets[g], generic.edgeFaceOffsets[g + 1]))
             << where << " edge " << e;
         EXPECT_EQ(direct.edgeFlags[e], generic.edgeFlags[g]) << where << " edge " << e;
     }
     for (int v = 0; v < direct.numVertices; ++v) {
-        EXPECT_EQ(sortedRange(direct.vertFaces, direct.vertFaceOffsets[v], direct.vertFaceOffsets[v + 1]),
-                  sortedRange(generic.vertFaces, generic.vertFaceOffsets[v], generic.vertFaceOffsets[v + 1]))
+        EXPECT_EQ(range(direct.vertFaces, direct.vertFaceOffsets[v], direct.vertFaceOffsets[v + 1]),
+                  range(generic.vertFaces, generic.vertFaceOffsets[v], generic.vertFaceOffsets[v + 1]))
             << where << " vertex " << v;
+        // Edge numbers differ between the builders: each listed edge ends at v, ascending, and
+        // the lists have the same length.
         EXPECT_EQ(direct.vertexEdgeCount(v), generic.vertexEdgeCount(v)) << where << " vertex " << v;
+        const std::vector<int> edges = range(direct.vertEdges, direct.vertEdgeOffsets[v], direct.vertEdgeOffsets[v + 1]);
+        EXPECT_TRUE(std::is_sorted(edges.begin(), edges.end())) << where << " vertex " << v;
+        for (int e : edges)
+            EXPECT_TRUE(direct.edgeVerts[2 * e] == v || direct.edgeVerts[2 * e + 1] == v) << where << " vertex " << v;
         EXPECT_EQ(direct.vertFlags[v], generic.vertFlags[v]) << where << " vertex " << v;
     }
 }

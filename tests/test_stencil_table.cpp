@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 
+#include "bench/torus.h"
 #include "far/rules.h"
 #include "far/weight_pool.h"
 #include "osd/cpu_evaluator.h"
@@ -115,38 +116,16 @@ TEST(StencilTableGuard, EstimateBoundsTheLevel) {
 // ---------------------------------------------------------------------------------------------
 // The weight pool.
 
-// A closed n x n torus's connectivity: quads, or every quad split along the same diagonal, so
-// that every vertex is regular (valence 4 or 6) and every level has one mask per kind of point.
-struct Torus {
-    int numVertices = 0;
-    std::vector<int> faceSizes, faceVerts;
-
-    TopologyDescriptor descriptor() const {
-        TopologyDescriptor d;
-        d.numVertices = numVertices;
-        d.numFaces = int(faceSizes.size());
-        d.numVertsPerFace = faceSizes.data();
-        d.faceVertIndices = faceVerts.data();
-        return d;
-    }
-};
-
-Torus makeTorus(int n, bool triangles) {
-    Torus t;
-    t.numVertices = n * n;
-    auto vertex = [n](int i, int j) { return (i % n) * n + j % n; };
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            const int a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
-            if (triangles) {
-                t.faceSizes.insert(t.faceSizes.end(), {3, 3});
-                t.faceVerts.insert(t.faceVerts.end(), {a, b, c, a, c, d});
-            } else {
-                t.faceSizes.push_back(4);
-                t.faceVerts.insert(t.faceVerts.end(), {a, b, c, d});
-            }
-        }
-    return t;
+// The bench's closed n x n tori (bench/torus.h): quads, or every quad split along the same
+// diagonal, so that every vertex is regular (valence 4 or 6) and every level has one mask per
+// kind of point.
+TopologyDescriptor descriptorOf(const bench::ControlMesh& mesh) {
+    TopologyDescriptor d;
+    d.numVertices = mesh.numVertices;
+    d.numFaces = mesh.numFaces();
+    d.numVertsPerFace = mesh.faceSizes.data();
+    d.faceVertIndices = mesh.faceVerts.data();
+    return d;
 }
 
 TEST(WeightSharing, RegularTorusPoolsOneSequencePerMask) {
@@ -159,8 +138,9 @@ TEST(WeightSharing, RegularTorusPoolsOneSequencePerMask) {
                           Case{true, 2, "triangles: edge and vertex points"}}) {
         // Level 3 has 65536 children, enough for the analyzer to build it in parts when it has
         // two threads: the parts' pools must merge without a duplicate.
-        const Torus torus = makeTorus(32, c.triangles);
-        Refiner refiner(torus.descriptor(), Options());
+        const bench::ControlMesh torus =
+            bench::makeTorus(32, c.triangles ? bench::TorusFaces::Triangles : bench::TorusFaces::Quads);
+        Refiner refiner(descriptorOf(torus), Options());
         refiner.refineUniform(3);
         for (int L = 1; L <= 3; ++L) {
             const StencilTable& t = refiner.levelStencils(L);
@@ -180,7 +160,7 @@ TEST(WeightSharing, RegularTorusPoolsOneSequencePerMask) {
         // And into exactly the table of a build on one thread.
         tbb::task_arena oneThread(1);
         oneThread.execute([&] {
-            Refiner serial(torus.descriptor(), Options());
+            Refiner serial(descriptorOf(torus), Options());
             serial.refineUniform(3);
             for (int L = 1; L <= 3; ++L) {
                 const StencilTable &a = refiner.levelStencils(L), &b = serial.levelStencils(L);
