@@ -34,20 +34,28 @@ public:
         }
     }
 
-    // Appends the stencil (in first-touched order) and resets; returns its size.
+    int size() const { return size_; }
+
+    // Writes the stencil's size() entries (in first-touched order) and resets.
+    template <typename Weight>
+    void flushTo(int* indices, Weight* weights) {
+        for (int k = 0; k < size_; ++k) {
+            indices[k] = indices_[k];
+            weights[k] = Weight(weights_[k]);
+        }
+        if (size_ > kLinearLimit)
+            for (int k = 0; k < size_; ++k) slot_[indices_[k]] = -1;
+        size_ = 0;
+    }
+
+    // Appends the stencil to growing arrays and resets; returns its size.
     template <typename Weight>
     int flush(std::vector<int>& indices, std::vector<Weight>& weights) {
         const int n = size_;
         const std::size_t i0 = indices.size(), w0 = weights.size();
         indices.resize(i0 + n);
         weights.resize(w0 + n);
-        for (int k = 0; k < n; ++k) {
-            indices[i0 + k] = indices_[k];
-            weights[w0 + k] = Weight(weights_[k]);
-        }
-        if (n > kLinearLimit)
-            for (int k = 0; k < n; ++k) slot_[indices_[k]] = -1;
-        size_ = 0;
+        flushTo(indices.data() + i0, weights.data() + w0);
         return n;
     }
 
