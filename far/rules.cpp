@@ -17,7 +17,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 
 #include <tbb/parallel_for.h>
@@ -27,7 +26,7 @@
 #include "far/crease.h"
 #include "far/schaefer_warren.h"
 #include "far/sparse_accumulator.h"
-#include "far/weight_pool.h"
+#include "far/stencil_writer.h"
 
 namespace quadtri {
 
@@ -149,115 +148,6 @@ float childSharpnessAt(const Topology& t, const std::vector<float>& childEdgeSha
         if (t.vertEdges[i] == e) return childEdgeSharpness[i];
     return 0.0f;
 }
-
-// Appends each accumulated mask to the table being built. The float table interns the mask's
-// weights in the level's pool, so identical masks share one copy; the double table (analysis
-// and composition) stores them per entry.
-template <typename Table>
-class StencilWriter;
-
-template <>
-class StencilWriter<StencilTableD> {
-public:
-    StencilWriter(StencilTableD& table, int numStencils, std::size_t maxEntries) : table_(table) {
-        table_.sizes.reserve(numStencils);
-        table_.offsets.reserve(numStencils);
-        table_.indices.reserve(maxEntries);
-        table_.weights.reserve(maxEntries);
-    }
-    void append(SparseAccumulator& acc) {
-        table_.offsets.push_back(int(table_.indices.size()));
-        table_.sizes.push_back(acc.flush(table_.indices, table_.weights));
-    }
-    // Appends the stencils of a table built for the children that follow.
-    void append(const StencilTableD& part) {
-        const int base = int(table_.indices.size());
-        for (int offset : part.offsets) table_.offsets.push_back(base + offset);
-        table_.sizes.insert(table_.sizes.end(), part.sizes.begin(), part.sizes.end());
-        table_.indices.insert(table_.indices.end(), part.indices.begin(), part.indices.end());
-        table_.weights.insert(table_.weights.end(), part.weights.begin(), part.weights.end());
-    }
-    void finish() {}
-
-private:
-    StencilTableD& table_;
-};
-
-template <>
-class StencilWriter<StencilTable> {
-public:
-    // Offsets and weight offsets are sized up front and written by position; indices grow in
-    // blocks through a cursor. vector::push_back and resize are not inlined here, and a call
-    // per stencil was a fifth of the build.
-    StencilWriter(StencilTable& table, int numStencils, std::size_t maxEntries) : table_(table) {
-        table_.offsets.assign(std::size_t(numStencils) + 1, 0);
-        table_.weightOffsets.assign(numStencils, 0);
-        table_.indices.reserve(maxEntries);
-    }
-    void append(SparseAccumulator& acc) {
-        const int n = acc.size();
-        if (int(maskWeights_.size()) < n) maskWeights_.resize(n);
-        acc.flushTo(extendIndices(n), maskWeights_.data());
-        // Neighbouring children are mostly of one kind and regular: most masks repeat the one
-        // before, which a bitwise comparison confirms without hashing.
-        if (!sameAsPrevious(n)) {
-            previousOffset_ = pool_.intern(maskWeights_.data(), n);
-            previousSize_ = n;
-        }
-        table_.weightOffsets[stencils_] = previousOffset_;
-        table_.offsets[++stencils_] = int(entries_);
-    }
-    // Appends the stencils of a finished table built for the children that follow, interning
-    // its pool's sequences in first-use order: the result equals a serial build's exactly.
-    void append(const StencilTable& part) {
-        const int base = int(entries_);
-        remap_.assign(part.weights.size() + 1, -1);  // + 1: an empty sequence may sit at the end
-        for (int i = 0; i < part.numStencils(); ++i) {
-            int& global = remap_[part.weightOffsets[i]];
-            if (global < 0) global = pool_.intern(part.weightsOf(i), part.size(i));
-            table_.weightOffsets[stencils_] = global;
-            table_.offsets[++stencils_] = base + part.offsets[i + 1];
-        }
-        std::copy(part.indices.begin(), part.indices.end(), extendIndices(part.indices.size()));
-    }
-    void finish() {
-        table_.indices.resize(entries_);
-        table_.weights = pool_.takeWeights();
-    }
-
-private:
-    static constexpr std::size_t kIndexBlock = 16384;
-
-    int* extendIndices(std::size_t n) {
-        if (entries_ + n > table_.indices.size())
-            table_.indices.resize(std::max(table_.indices.size() + kIndexBlock, entries_ + n));
-        int* out = table_.indices.data() + entries_;
-        entries_ += n;
-        return out;
-    }
-
-    StencilTable& table_;
-    int stencils_ = 0;         // stencils written
-    std::size_t entries_ = 0;  // indices written (table_.indices runs ahead by up to a block)
-    WeightPool pool_;
-    std::vector<float> maskWeights_;  // the current mask's weights before interning
-    std::vector<int> remap_;          // a part's pool offsets -> this pool's
-    int previousOffset_ = -1;         // where the last mask's weights sit in the pool
-    int previousSize_ = 0;
-
-    bool sameAsPrevious(int n) const {
-        if (previousOffset_ < 0 || n != previousSize_) return false;
-        const float* previous = pool_.weights().data() + previousOffset_;
-        for (int k = 0; k < n; ++k)
-            if (bitsOf(maskWeights_[k]) != bitsOf(previous[k])) return false;
-        return true;
-    }
-    static std::uint32_t bitsOf(float w) {
-        std::uint32_t bits;
-        std::memcpy(&bits, &w, sizeof bits);
-        return bits;
-    }
-};
 
 // What every worker of a level reads.
 struct LevelInputs {
