@@ -18,12 +18,14 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "far/butterfly.h"
 #include "far/crease.h"
+#include "far/regular_masks.h"
 #include "far/schaefer_warren.h"
 #include "far/sparse_accumulator.h"
 #include "far/stencil_writer.h"
@@ -221,11 +223,35 @@ void vertexMask(const LevelInputs& in, Worker& w, int v) {
 }
 
 // Masks of children [first, last) in child order (face points, edge points, vertex points).
+// Float tables of smooth Stam-Loop and Schaefer-Warren levels take the regular masks' short cut
+// (regular_masks.h) wherever Schaefer-Warren leaves the Stam-Loop masks alone.
 template <typename Table>
 void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, int last) {
     Worker w(in.t, in.options);
     const int edgePoints = in.num.numFacePoints, vertexPoints = edgePoints + in.t.numEdges();
+    constexpr bool kFloat = std::is_same_v<Table, StencilTable>;
+    const bool shortCut = kFloat && in.smooth &&
+                          (in.options.scheme == Scheme::StamLoop || in.options.scheme == Scheme::SchaeferWarren);
+    RegularMasks regular(in.t);
+    int gathered[2 * RegularMasks::kMaxValence + 1];
     for (int c = first; c < last; ++c) {
+        int n = 0, key = 0;
+        if (shortCut && c >= edgePoints) {
+            const SchaeferWarrenMasks* unzipped = w.level.unzipped;
+            if (c < vertexPoints) {
+                const int e = c - edgePoints;
+                if (!unzipped || !unzipped->touchesEdge(e)) n = regular.edge(e, gathered, key);
+            } else {
+                const int v = c - vertexPoints;
+                if (!unzipped || !unzipped->touchesVertex(v)) n = regular.vertex(v, gathered, key);
+            }
+        }
+        if constexpr (kFloat) {
+            if (n > 0 && regular.weights(key) >= 0) {
+                writer.append(gathered, n, regular.weights(key));
+                continue;
+            }
+        }
         if (c < edgePoints)
             w.level.facePoint(in.faceOfPoint[c]);
         else if (c < vertexPoints)
@@ -233,6 +259,11 @@ void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, 
         else
             vertexMask(in, w, c - vertexPoints);
         writer.append(w.acc);
+        if constexpr (kFloat) {
+            if (n > 0 && regular.weights(key) == RegularMasks::kUnknown)
+                regular.setWeights(key, writer.lastHasIndices(gathered, n) ? writer.lastWeightOffset()
+                                                                           : RegularMasks::kNever);
+        }
     }
 }
 

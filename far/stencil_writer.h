@@ -70,6 +70,18 @@ public:
         table_.weightOffsets[stencils_] = previousOffset_;
         table_.offsets[++stencils_] = int(entries_);
     }
+    // Appends a stencil whose weights are already in the pool (RegularMasks).
+    void append(const int* indices, int n, int weightOffset) {
+        std::copy(indices, indices + n, extendIndices(n));
+        table_.weightOffsets[stencils_] = weightOffset;
+        table_.offsets[++stencils_] = int(entries_);
+    }
+    // Whether the last stencil appended has exactly these indices, and where its weights are.
+    bool lastHasIndices(const int* indices, int n) const {
+        const int first = table_.offsets[stencils_ - 1];
+        return int(entries_) - first == n && std::equal(indices, indices + n, table_.indices.data() + first);
+    }
+    int lastWeightOffset() const { return table_.weightOffsets[stencils_ - 1]; }
     // Appends the stencils of a finished table built for the children that follow, interning
     // its pool's sequences in first-use order: the result equals a serial build's exactly.
     void append(const StencilTable& part) {
