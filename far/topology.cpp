@@ -59,7 +59,7 @@ void buildEdges(Topology& t) {
     std::vector<int> cornerNext(nc);
     for (int f = 0; f < t.numFaces(); ++f) {
         const int b = t.faceOffsets[f], n = t.faceSize(f);
-        for (int i = 0; i < n; ++i) cornerNext[b + i] = t.faceVerts[b + (i + 1) % n];
+        for (int i = 0; i < n; ++i) cornerNext[b + i] = t.faceVerts[i + 1 == n ? b : b + i + 1];
     }
     std::vector<int> bucketOffsets(nv + 1, 0);
     for (int c = 0; c < nc; ++c) ++bucketOffsets[std::min(t.faceVerts[c], cornerNext[c]) + 1];
@@ -229,7 +229,7 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     for (int f = 0; f < desc.numFaces; ++f) {
         const int n = desc.numVertsPerFace[f];
         for (int i = 0; i < n; ++i)
-            if (verts[i] != verts[(i + n - 1) % n]) t.faceVerts.push_back(verts[i]);
+            if (verts[i] != verts[i == 0 ? n - 1 : i - 1]) t.faceVerts.push_back(verts[i]);
         t.faceOffsets.push_back(int(t.faceVerts.size()));
         verts += n;
     }

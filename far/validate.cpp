@@ -34,6 +34,20 @@ void checkSharpness(float s, const std::string& what, Component component, int i
     }
 }
 
+// A vertex listed twice, or -1. Faces are small: pairwise comparison, sorting only long ones.
+int repeatedVertex(std::vector<int>& corners) {
+    const std::size_t n = corners.size();
+    if (n <= 8) {
+        for (std::size_t i = 1; i < n; ++i)
+            for (std::size_t j = 0; j < i; ++j)
+                if (corners[i] == corners[j]) return corners[i];
+        return -1;
+    }
+    std::sort(corners.begin(), corners.end());
+    const auto dup = std::adjacent_find(corners.begin(), corners.end());
+    return dup == corners.end() ? -1 : *dup;
+}
+
 }  // namespace
 
 void validateDescriptor(const TopologyDescriptor& d) {
@@ -63,17 +77,15 @@ void validateDescriptor(const TopologyDescriptor& d) {
         // other repeat is an error, and so is a face left with fewer than 3 corners.
         corners.clear();
         for (int i = 0; i < n; ++i)
-            if (verts[i] != verts[(i + n - 1) % n]) corners.push_back(verts[i]);
+            if (verts[i] != verts[i == 0 ? n - 1 : i - 1]) corners.push_back(verts[i]);
         if (corners.size() < 3) {
             const int v = verts[0];
             fail(face(f) + ": vertex " + std::to_string(v) + " appears more than once, leaving " +
                      std::to_string(corners.size()) + " distinct corners; a face needs at least 3",
                  Component::Face, f);
         }
-        std::sort(corners.begin(), corners.end());
-        const auto dup = std::adjacent_find(corners.begin(), corners.end());
-        if (dup != corners.end())
-            fail(face(f) + ": vertex " + std::to_string(*dup) + " appears more than once", Component::Face, f);
+        if (const int repeated = repeatedVertex(corners); repeated >= 0)
+            fail(face(f) + ": vertex " + std::to_string(repeated) + " appears more than once", Component::Face, f);
     }
     for (int i = 0; i < d.numCreases; ++i) {
         const int a = d.creaseVertexPairs[2 * i], b = d.creaseVertexPairs[2 * i + 1];
