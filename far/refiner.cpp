@@ -26,9 +26,11 @@ std::size_t Refiner::estimateLevelBytes(int L) const {
         // and vertices' points.
         entries += n + 2 * n * n;
     }
-    const std::size_t edges = 2 * std::size_t(p.numEdges()) + corners / 4;
-    const std::size_t vertices = facePoints + p.numEdges() + p.numVertices;
-    entries += 4 * std::size_t(p.numEdges()) + p.numVertices;
+    // A faces-only level has no edges yet: one per corner bounds them (an open mesh's count).
+    const std::size_t parentEdges = p.edgeVerts.empty() ? p.faceVerts.size() : std::size_t(p.numEdges());
+    const std::size_t edges = 2 * parentEdges + corners / 4;
+    const std::size_t vertices = facePoints + parentEdges + p.numVertices;
+    entries += 4 * parentEdges + p.numVertices;
     const std::size_t topologyBytes = corners * 16 + edges * 25 + vertices * 22 + faces * 5;
     // An index per entry and two offsets per stencil (weights are pooled), twice over: the parts
     // built by other threads are copied into the table (buildLevelStencils). Catmark-butterfly's
@@ -49,12 +51,12 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
     if (maxLevel < 0) throw TopologyError("refinement level " + std::to_string(maxLevel) + " is negative");
     while (this->maxLevel() < maxLevel) {
         const int L = this->maxLevel() + 1;
+        completeLevel(L - 1);  // within the budget level L - 1 was built under
         const std::size_t estimate = estimateLevelBytes(L);
         if (estimate > options_.memoryBudgetBytes)
             throw TopologyError("level " + std::to_string(L) + " needs an estimated " + std::to_string(estimate) +
                                 " bytes of tables and output, over the budget of " +
                                 std::to_string(options_.memoryBudgetBytes) + " bytes (Options::memoryBudgetBytes)");
-        completeLevel(L - 1);
         const Topology& parent = levels_.back();
         const ChildNumbering numbering = numberChildren(parent);
         const TopologyDetail detail = L == maxLevel ? lastLevel : TopologyDetail::Full;

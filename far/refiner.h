@@ -38,7 +38,8 @@ public:
     // composed, accumulated in double precision.
     StencilTable factorizedStencils(int L) const;
 
-    // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L.
+    // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L
+    // (a looser bound while level L-1 holds its faces only).
     std::size_t estimateLevelBytes(int L) const;
 
 private:

@@ -17,6 +17,8 @@ double stamLoopEta(int nE, int nQ, int nT);
 // Masks of the child vertices of `parent`, in the child order of `numbering`.
 // Masks are accumulated in double; Table is StencilTable (float weights, pooled: what the
 // Refiner stores) or StencilTableD (double weights, for exact tests and composition).
+// Large levels are built on the calling TBB arena's threads; the table does not depend on
+// how many there are.
 template <typename Table>
 Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering, const Options& options);
 

@@ -282,6 +282,13 @@ TEST(Validation, MemoryBudget) {
     oneLess.memoryBudgetBytes = estimate - 1;
     Refiner tight(m.descriptor(), oneLess);
     EXPECT_THROW(tight.refineUniform(1), TopologyError);
+
+    // A faces-only last level (no edges yet) must not make the next level look cheaper.
+    Refiner facesOnly(m.descriptor(), Options()), full(m.descriptor(), Options());
+    facesOnly.refineUniform(1);
+    full.refineUniform(1, TopologyDetail::Full);
+    ASSERT_TRUE(facesOnly.level(1).edgeVerts.empty());
+    EXPECT_GE(facesOnly.estimateLevelBytes(2), full.estimateLevelBytes(2));
 }
 
 TEST(Validation, RefineToLevelZeroAndNegativeLevels) {
