@@ -1,6 +1,13 @@
 #include "far/crease.h"
 
+#include <algorithm>
+
 namespace quadtri {
+
+bool hasSharpness(const Topology& t) {
+    return std::any_of(t.edgeSharpness.begin(), t.edgeSharpness.end(), isSharp) ||
+           std::any_of(t.vertSharpness.begin(), t.vertSharpness.end(), isSharp);
+}
 
 void childEdgeSharpnessAtVertex(const Topology& t, int v, CreaseMethod method, float* out) {
     const int begin = t.vertEdgeOffsets[v], n = t.vertexEdgeCount(v);

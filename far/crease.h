@@ -18,6 +18,10 @@ inline float decrementSharpness(float s) {
     return s > 1.0f ? s - 1.0f : 0.0f;
 }
 
+// Whether any edge or vertex of the level has sharpness > 0: without, no crease rule applies and
+// no sharpness passes to the children.
+bool hasSharpness(const Topology& topology);
+
 enum class VertexRule { Smooth, Dart, Crease, Corner };
 
 // Rule of a vertex from its own sharpness and the number of incident edges with sharpness > 0.

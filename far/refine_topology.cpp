@@ -346,10 +346,7 @@ Topology refineTopology(const Topology& parent, const ChildNumbering& numbering,
     Topology child;
     ChildBuilder(parent, numbering, child).build(detail);
     // A level without sharpness passes none on: the child's arrays are already zero.
-    const auto sharp = [](float s) { return isSharp(s); };
-    const bool anySharp = std::any_of(parent.edgeSharpness.begin(), parent.edgeSharpness.end(), sharp) ||
-                          std::any_of(parent.vertSharpness.begin(), parent.vertSharpness.end(), sharp);
-    if (detail == TopologyDetail::Full && anySharp) inheritSharpness(parent, numbering, creaseMethod, child);
+    if (detail == TopologyDetail::Full && hasSharpness(parent)) inheritSharpness(parent, numbering, creaseMethod, child);
     return child;
 }
 

@@ -159,6 +159,7 @@ struct LevelInputs {
     std::vector<int> faceOfPoint;           // parent face of each face point
     std::vector<float> childEdgeSharpness;  // per (vertex, incident edge), parallel to t.vertEdges
     bool smooth;  // no sharp edge or vertex in the level (closed, uncreased): no crease rule applies
+    std::optional<UnzippedLevel> unzipped;  // Schaefer-Warren's copies, built once per level
 };
 
 // One worker's state: the accumulator and the scheme hooks hold per-mask scratch, so each
@@ -170,19 +171,19 @@ struct Worker {
     Level level;
     std::vector<float> parentEdgeSharpness;  // per incident edge of the current vertex
 
-    Worker(const Topology& t, const Options& options) : acc(t.numVertices), level{t, acc, nullptr, nullptr} {
-        if (options.scheme == Scheme::SchaeferWarren) level.unzipped = &unzipped.emplace(t, acc);
-        if (options.scheme == Scheme::CatmarkButterfly) level.butterfly = &butterfly.emplace(t, acc);
+    explicit Worker(const LevelInputs& in) : acc(in.t.numVertices), level{in.t, acc, nullptr, nullptr} {
+        if (in.unzipped) level.unzipped = &unzipped.emplace(in.t, *in.unzipped, acc);
+        if (in.options.scheme == Scheme::CatmarkButterfly) level.butterfly = &butterfly.emplace(in.t, acc);
     }
 };
 
 void edgeMask(const LevelInputs& in, Worker& w, int e) {
     const Topology& t = in.t;
+    if (in.smooth) return w.level.edgeSmooth(e, 1.0);
     // The edge point is a crease point when both child halves stay sharp. Uniform decay keeps
     // them sharp exactly when s > 1 (s = 1 blends with weight 1, the same point); Chaikin can
     // smooth the children of an edge with s > 1 next to weaker creases, and the blend then
     // uses s unclamped, as OpenSubdiv does.
-    if (in.smooth) return w.level.edgeSmooth(e, 1.0);
     const float s = t.edgeSharpness[e];
     bool sharp = in.options.scheme == Scheme::Bilinear || isInfinite(s) || t.edgeFaceCount(e) != 2;
     if (!sharp && isSharp(s)) {
@@ -227,7 +228,7 @@ void vertexMask(const LevelInputs& in, Worker& w, int v) {
 // (regular_masks.h) wherever Schaefer-Warren leaves the Stam-Loop masks alone.
 template <typename Table>
 void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, int last) {
-    Worker w(in.t, in.options);
+    Worker w(in);
     const int edgePoints = in.num.numFacePoints, vertexPoints = edgePoints + in.t.numEdges();
     constexpr bool kFloat = std::is_same_v<Table, StencilTable>;
     const bool shortCut = kFloat && in.smooth &&
@@ -278,11 +279,9 @@ constexpr int kMinChildrenPerPart = 32768;
 template <typename Table>
 Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options) {
     const int numChildren = num.numFacePoints + t.numEdges() + t.numVertices;
-    const auto sharp = [](float s) { return isSharp(s); };
-    const bool smooth = options.scheme != Scheme::Bilinear &&
-                        std::none_of(t.edgeSharpness.begin(), t.edgeSharpness.end(), sharp) &&
-                        std::none_of(t.vertSharpness.begin(), t.vertSharpness.end(), sharp);
-    LevelInputs in{t, num, options, std::vector<int>(num.numFacePoints), {}, smooth};
+    const bool smooth = options.scheme != Scheme::Bilinear && !hasSharpness(t);
+    LevelInputs in{t, num, options, std::vector<int>(num.numFacePoints), {}, smooth, std::nullopt};
+    if (options.scheme == Scheme::SchaeferWarren) in.unzipped.emplace(t);
     for (int f = 0; f < t.numFaces(); ++f)
         if (num.facePoint[f] >= 0) in.faceOfPoint[num.facePoint[f]] = f;
     if (!smooth) {

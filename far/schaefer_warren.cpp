@@ -5,31 +5,33 @@
 
 namespace quadtri {
 
-SchaeferWarrenMasks::SchaeferWarrenMasks(const Topology& topology, SparseAccumulator& accumulator)
-    : t_(topology),
-      acc_(accumulator),
-      triangleCopies_(unzipStencils(topology, Piece::Triangle)),
-      quadCopies_(unzipStencils(topology, Piece::Quad)),
-      faceTouches_(topology.numFaces(), 0) {
-    for (int f = 0; f < t_.numFaces(); ++f)
-        for (int c = t_.faceOffsets[f]; c < t_.faceOffsets[f + 1]; ++c)
-            if (quadCopies_.sizes[t_.faceVerts[c]] > 1) faceTouches_[f] = 1;
+UnzippedLevel::UnzippedLevel(const Topology& t)
+    : triangleCopies(unzipStencils(t, Piece::Triangle)),
+      quadCopies(unzipStencils(t, Piece::Quad)),
+      faceTouches(t.numFaces(), 0) {
+    for (int f = 0; f < t.numFaces(); ++f)
+        for (int c = t.faceOffsets[f]; c < t.faceOffsets[f + 1]; ++c)
+            if (quadCopies.sizes[t.faceVerts[c]] > 1) faceTouches[f] = 1;
 }
+
+SchaeferWarrenMasks::SchaeferWarrenMasks(const Topology& topology, const UnzippedLevel& unzipped,
+                                         SparseAccumulator& accumulator)
+    : t_(topology), u_(unzipped), acc_(accumulator) {}
 
 bool SchaeferWarrenMasks::touchesEdge(int e) const {
     for (int k = t_.edgeFaceOffsets[e]; k < t_.edgeFaceOffsets[e + 1]; ++k)
-        if (faceTouches_[t_.edgeFaces[k]]) return true;
+        if (u_.faceTouches[t_.edgeFaces[k]]) return true;
     return false;
 }
 
 bool SchaeferWarrenMasks::touchesVertex(int v) const {
     for (int k = t_.vertFaceOffsets[v]; k < t_.vertFaceOffsets[v + 1]; ++k)
-        if (faceTouches_[t_.vertFaces[k]]) return true;
+        if (u_.faceTouches[t_.vertFaces[k]]) return true;
     return false;
 }
 
 void SchaeferWarrenMasks::addCopy(int v, bool quad, double scale) {
-    const StencilTableD& copies = quad ? quadCopies_ : triangleCopies_;
+    const StencilTableD& copies = quad ? u_.quadCopies : u_.triangleCopies;
     for (int k = copies.offsets[v]; k < copies.offsets[v] + copies.sizes[v]; ++k)
         acc_.add(copies.indices[k], scale * copies.weights[k]);
 }

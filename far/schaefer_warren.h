@@ -14,13 +14,23 @@
 
 namespace quadtri {
 
+// What every mask of a level reads: each vertex's copies in the unzipped pieces (as stencils over
+// the level's vertices) and which faces have a vertex on the network. Built once per level and
+// shared, read-only, by the threads building its masks.
+struct UnzippedLevel {
+    explicit UnzippedLevel(const Topology& topology);
+
+    StencilTableD triangleCopies, quadCopies;
+    std::vector<uint8_t> faceTouches;  // per face: one of its vertices has network edges
+};
+
 class SchaeferWarrenMasks {
 public:
-    SchaeferWarrenMasks(const Topology& topology, SparseAccumulator& accumulator);
+    SchaeferWarrenMasks(const Topology& topology, const UnzippedLevel& unzipped, SparseAccumulator& accumulator);
 
     // Whether a child's mask reads an unzipped copy: only then does it differ from Stam-Loop's
     // (which is cheaper to build), i.e. when a face around it has a vertex on the network.
-    bool touchesFace(int face) const { return faceTouches_[face] != 0; }
+    bool touchesFace(int face) const { return u_.faceTouches[face] != 0; }
     bool touchesEdge(int edge) const;
     bool touchesVertex(int vertex) const;
 
@@ -44,9 +54,8 @@ private:
     int edgeAt(int face, int corner) const;  // edge from corner to corner + 1 (cyclic)
 
     const Topology& t_;
+    const UnzippedLevel& u_;
     SparseAccumulator& acc_;
-    StencilTableD triangleCopies_, quadCopies_;
-    std::vector<uint8_t> faceTouches_;  // per face: one of its vertices has network edges
 };
 
 }  // namespace quadtri

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "far/sparse_accumulator.h"
@@ -96,6 +98,10 @@ public:
         std::copy(part.indices.begin(), part.indices.end(), extendIndices(part.indices.size()));
     }
     void finish() {
+        // Offsets were sized for the stencils announced: fewer written would leave a wrong table.
+        if (stencils_ != table_.numStencils())
+            throw std::logic_error("StencilWriter: " + std::to_string(stencils_) + " stencils written, " +
+                                   std::to_string(table_.numStencils()) + " announced");
         table_.indices.resize(entries_);
         table_.weights = pool_.takeWeights();
     }
