@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace quadtri {
 
@@ -58,20 +59,35 @@ struct TopologyDescriptor {
     const int* holeIndices = nullptr;  // face indices
 };
 
+// One problem found in the input: which item (a face, crease, corner or hole, by its index in the
+// descriptor's arrays), the vertex it is about if any, and what is wrong. A file reader renders it
+// in the file's own numbering (line, 1-based OBJ indices); message() renders it 0-based:
+// "face 2: vertex 7 appears more than once".
+struct TopologyDiagnostic {
+    enum class Component { None, Face, Crease, Corner, Hole };
+    Component component = Component::None;
+    int index = -1;   // item index in the descriptor, or -1
+    int vertex = -1;  // 0-based vertex the problem is about, or -1; message() puts "vertex V " before problem
+    std::string problem;  // the rest of the message
+
+    std::string message() const;
+};
+
 // Malformed topology or an unsatisfiable request. The message names the face, vertex or level;
-// component() and index() say which input item is at fault, so that a file reader can point at
-// the line it came from.
+// diagnostic() says which input item is at fault, so that a file reader can point at the line
+// it came from.
 class TopologyError : public std::runtime_error {
 public:
-    enum class Component { None, Face, Crease, Corner, Hole };
-    explicit TopologyError(const std::string& what, Component component = Component::None, int index = -1)
-        : std::runtime_error(what), component_(component), index_(index) {}
-    Component component() const { return component_; }
-    int index() const { return index_; }
+    using Component = TopologyDiagnostic::Component;
+    explicit TopologyError(const std::string& what) : std::runtime_error(what), diagnostic_{Component::None, -1, -1, what} {}
+    explicit TopologyError(TopologyDiagnostic diagnostic)
+        : std::runtime_error(diagnostic.message()), diagnostic_(std::move(diagnostic)) {}
+    Component component() const { return diagnostic_.component; }
+    int index() const { return diagnostic_.index; }
+    const TopologyDiagnostic& diagnostic() const { return diagnostic_; }
 
 private:
-    Component component_;
-    int index_;
+    TopologyDiagnostic diagnostic_;
 };
 
 const char* toString(Scheme scheme);

@@ -10,7 +10,7 @@
 namespace quadtri {
 
 Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
-    levels_.push_back(buildBaseTopology(desc, options));
+    levels_.push_back(buildBaseTopology(desc, options, &warnings_));
     detail_.push_back(TopologyDetail::Full);
 }
 

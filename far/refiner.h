@@ -23,6 +23,9 @@ public:
     void refineUniform(int maxLevel, TopologyDetail lastLevel = TopologyDetail::FacesOnly);
 
     int maxLevel() const { return int(levels_.size()) - 1; }
+    // What the descriptor had that was accepted with a change, each naming its item (a crease on
+    // a pair that is not an edge: ignored). Empty for clean input.
+    const std::vector<TopologyDiagnostic>& warnings() const { return warnings_; }
     const Options& options() const { return options_; }
 
     // Topology of level 0 .. maxLevel() (the last one possibly faces only, see refineUniform).
@@ -46,6 +49,7 @@ private:
     void completeLevel(int L);  // rebuilds a faces-only level in full
 
     Options options_;
+    std::vector<TopologyDiagnostic> warnings_;
     std::vector<Topology> levels_;
     std::vector<TopologyDetail> detail_;  // per level
     std::vector<StencilTable> levelTables_;

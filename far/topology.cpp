@@ -33,6 +33,14 @@ const char* toString(CreaseMethod method) {
     return "?";
 }
 
+std::string TopologyDiagnostic::message() const {
+    static const char* const names[] = {"", "face", "crease", "corner", "hole"};
+    std::string text;
+    if (component != Component::None) text = std::string(names[int(component)]) + " " + std::to_string(index) + ": ";
+    if (vertex >= 0) text += "vertex " + std::to_string(vertex) + " ";
+    return text + problem;
+}
+
 VertexFaceCounts countVertexFaces(const Topology& t, int v) {
     VertexFaceCounts counts;
     for (int i = t.vertFaceOffsets[v]; i < t.vertFaceOffsets[v + 1]; ++i) {
@@ -217,7 +225,8 @@ int findEdge(const Topology& t, int a, int b) {
     return -1;
 }
 
-Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options) {
+Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
+                           std::vector<TopologyDiagnostic>* warnings) {
     validateDescriptor(desc);
     Topology t;
     t.numVertices = desc.numVertices;
@@ -242,10 +251,13 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     for (int i = 0; i < desc.numCreases; ++i) {
         const int a = desc.creaseVertexPairs[2 * i], b = desc.creaseVertexPairs[2 * i + 1];
         const int e = findEdge(t, a, b);
-        if (e < 0)
-            throw TopologyError("crease " + std::to_string(i) + ": vertices " + std::to_string(a) + " and " +
-                                std::to_string(b) + " do not share an edge",
-                                TopologyError::Component::Crease, i);
+        if (e < 0) {  // as OpenSubdiv: said, and ignored
+            if (warnings)
+                warnings->push_back({TopologyDiagnostic::Component::Crease, i, -1,
+                                     "vertices " + std::to_string(a) + ", " + std::to_string(b) +
+                                         " are not an edge of the mesh; crease ignored"});
+            continue;
+        }
         t.edgeSharpness[e] = desc.creaseWeights[i];
     }
     for (int i = 0; i < desc.numCorners; ++i) t.vertSharpness[desc.cornerVertexIndices[i]] = desc.cornerWeights[i];

@@ -76,8 +76,10 @@ int findEdge(const Topology& topology, int a, int b);
 
 // Checks the descriptor (throws TopologyError naming the face or vertex) and builds level 0:
 // edges, incidences, sharpness, boundary / non-manifold / seam flags, holes (including the
-// faces that BoundaryInterpolation::None turns into holes).
-Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options);
+// faces that BoundaryInterpolation::None turns into holes). What is accepted with a change (a
+// crease on a pair that is not an edge is ignored, as OpenSubdiv does) is appended to `warnings`.
+Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
+                           std::vector<TopologyDiagnostic>* warnings = nullptr);
 
 // Throws TopologyError for malformed input; called by buildBaseTopology before anything else.
 void validateDescriptor(const TopologyDescriptor& desc);

@@ -13,11 +13,10 @@ namespace {
 
 using Component = TopologyError::Component;
 
-[[noreturn]] void fail(const std::string& what, Component component = Component::None, int index = -1) {
-    throw TopologyError(what, component, index);
+[[noreturn]] void fail(const std::string& what) { throw TopologyError(what); }
+[[noreturn]] void fail(Component component, int index, int vertex, const std::string& problem) {
+    throw TopologyError({component, index, vertex, problem});
 }
-
-std::string face(int f) { return "face " + std::to_string(f); }
 
 void checkArray(int count, const void* array, const char* countName, const char* arrayName) {
     if (count < 0) fail(std::string(countName) + " is negative (" + std::to_string(count) + ")");
@@ -26,11 +25,11 @@ void checkArray(int count, const void* array, const char* countName, const char*
 }
 
 void checkSharpness(float s, const std::string& what, Component component, int index) {
-    if (!std::isfinite(s)) fail(what + ": sharpness is not a finite number", component, index);
+    if (!std::isfinite(s)) fail(component, index, -1, what + "sharpness is not a finite number");
     if (s < 0) {
         char value[32];
         std::snprintf(value, sizeof value, "%g", double(s));
-        fail(what + ": negative sharpness " + value, component, index);
+        fail(component, index, -1, what + "negative sharpness " + value);
     }
 }
 
@@ -64,50 +63,47 @@ void validateDescriptor(const TopologyDescriptor& d) {
     std::vector<int> corners;
     for (int f = 0; f < d.numFaces; ++f) {
         const int n = d.numVertsPerFace[f];
-        if (n < 3) fail(face(f) + " has " + std::to_string(n) + " vertices; a face needs at least 3", Component::Face, f);
+        if (n < 3) fail(Component::Face, f, -1, "has " + std::to_string(n) + " vertices; a face needs at least 3");
         const int* verts = d.faceVertIndices + total;
         total += n;
-        if (total > (1LL << 31) - 1) fail(face(f) + ": more than 2^31 face-vertex indices in total", Component::Face, f);
+        if (total > (1LL << 31) - 1) fail(Component::Face, f, -1, "more than 2^31 face-vertex indices in total");
         for (int i = 0; i < n; ++i)
             if (verts[i] < 0 || verts[i] >= d.numVertices)
-                fail(face(f) + ": vertex index " + std::to_string(verts[i]) + " is out of range [0, " +
-                     std::to_string(d.numVertices) + ")",
-                     Component::Face, f);
+                fail(Component::Face, f, -1,
+                     "vertex index " + std::to_string(verts[i]) + " is out of range [0, " + std::to_string(d.numVertices) + ")");
         // A corner equal to the one before it (cyclically) is a collapsed edge and is dropped; any
         // other repeat is an error, and so is a face left with fewer than 3 corners.
         corners.clear();
         for (int i = 0; i < n; ++i)
             if (verts[i] != verts[i == 0 ? n - 1 : i - 1]) corners.push_back(verts[i]);
         if (corners.size() < 3) {
-            const int v = verts[0];
-            fail(face(f) + ": vertex " + std::to_string(v) + " appears more than once, leaving " +
-                     std::to_string(corners.size()) + " distinct corners; a face needs at least 3",
-                 Component::Face, f);
+            fail(Component::Face, f, verts[0],
+                 "appears more than once, leaving " + std::to_string(corners.size()) +
+                     " distinct corners; a face needs at least 3");
         }
         if (const int repeated = repeatedVertex(corners); repeated >= 0)
-            fail(face(f) + ": vertex " + std::to_string(repeated) + " appears more than once", Component::Face, f);
+            fail(Component::Face, f, repeated, "appears more than once");
     }
     for (int i = 0; i < d.numCreases; ++i) {
         const int a = d.creaseVertexPairs[2 * i], b = d.creaseVertexPairs[2 * i + 1];
-        const std::string what = "crease " + std::to_string(i) + " (vertices " + std::to_string(a) + ", " +
-                                 std::to_string(b) + ")";
+        const std::string what = "vertices " + std::to_string(a) + ", " + std::to_string(b) + ": ";
         if (a < 0 || a >= d.numVertices || b < 0 || b >= d.numVertices)
-            fail(what + ": vertex index out of range", Component::Crease, i);
-        if (a == b) fail(what + ": both ends are the same vertex", Component::Crease, i);
+            fail(Component::Crease, i, -1, what + "vertex index out of range [0, " + std::to_string(d.numVertices) + ")");
+        if (a == b) fail(Component::Crease, i, -1, what + "both ends are the same vertex");
         checkSharpness(d.creaseWeights[i], what, Component::Crease, i);
     }
     for (int i = 0; i < d.numCorners; ++i) {
         const int v = d.cornerVertexIndices[i];
-        const std::string what = "corner " + std::to_string(i) + " (vertex " + std::to_string(v) + ")";
-        if (v < 0 || v >= d.numVertices) fail(what + ": vertex index out of range", Component::Corner, i);
-        checkSharpness(d.cornerWeights[i], what, Component::Corner, i);
+        if (v < 0 || v >= d.numVertices)
+            fail(Component::Corner, i, -1,
+                 "vertex " + std::to_string(v) + " is out of range [0, " + std::to_string(d.numVertices) + ")");
+        checkSharpness(d.cornerWeights[i], "vertex " + std::to_string(v) + ": ", Component::Corner, i);
     }
     for (int i = 0; i < d.numHoles; ++i) {
         const int f = d.holeIndices[i];
         if (f < 0 || f >= d.numFaces)
-            fail("hole " + std::to_string(i) + ": face index " + std::to_string(f) + " is out of range [0, " +
-                 std::to_string(d.numFaces) + ")",
-                 Component::Hole, i);
+            fail(Component::Hole, i, -1,
+                 "face index " + std::to_string(f) + " is out of range [0, " + std::to_string(d.numFaces) + ")");
     }
 }
 

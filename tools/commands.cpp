@@ -26,9 +26,12 @@ io::ObjMesh loadMesh(const MeshArgs& args) {
 // The analyzer over a file's mesh; topology errors name the file line of the face or tag at fault.
 Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options) {
     try {
-        return Refiner(mesh.descriptor(), options);
+        Refiner refiner(mesh.descriptor(), options);
+        for (const TopologyDiagnostic& w : refiner.warnings())
+            std::cerr << "quadtri: warning: " << mesh.locate(w) << w.message() << "\n";
+        return refiner;
     } catch (const TopologyError& e) {
-        throw io::ObjError(mesh.locate(e) + e.what());
+        throw io::ObjError(mesh.locate(e.diagnostic()) + e.what());
     }
 }
 

@@ -239,14 +239,15 @@ Options ObjMesh::applyTags(Options base) const {
     return base;
 }
 
-std::string ObjMesh::locate(const TopologyError& error) const {
-    using Component = TopologyError::Component;
-    const std::vector<int>* lines = error.component() == Component::Face     ? &faceLines
-                                    : error.component() == Component::Crease ? &creaseLines
-                                    : error.component() == Component::Corner ? &cornerLines
-                                    : error.component() == Component::Hole   ? &holeLines
-                                                                             : nullptr;
-    const int i = error.index();
+std::string ObjMesh::locate(const TopologyDiagnostic& diagnostic) const {
+    using Component = TopologyDiagnostic::Component;
+    const Component c = diagnostic.component;
+    const std::vector<int>* lines = c == Component::Face     ? &faceLines
+                                    : c == Component::Crease ? &creaseLines
+                                    : c == Component::Corner ? &cornerLines
+                                    : c == Component::Hole   ? &holeLines
+                                                             : nullptr;
+    const int i = diagnostic.index;
     if (lines && i >= 0 && size_t(i) < lines->size()) return name + ":" + std::to_string((*lines)[i]) + ": ";
     return name + ": ";
 }

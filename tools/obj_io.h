@@ -42,8 +42,8 @@ struct ObjMesh {
     TopologyDescriptor descriptor() const;
     // `base` with the boundary and crease method replaced where the file has tags for them.
     Options applyTags(Options base) const;
-    // "file:line: " of the face, crease, corner or hole a TopologyError names, else "file: ".
-    std::string locate(const TopologyError& error) const;
+    // "file:line: " of the face, crease, corner or hole a diagnostic names, else "file: ".
+    std::string locate(const TopologyDiagnostic& diagnostic) const;
 };
 
 ObjMesh parseObj(std::istream& in, const std::string& name);
