@@ -210,7 +210,7 @@ void vertexMask(const LevelInputs& in, Worker& w, int v) {
     std::vector<float>& parentSharpness = w.parentEdgeSharpness;
     parentSharpness.resize(n);
     for (int i = 0; i < n; ++i) parentSharpness[i] = t.edgeSharpness[t.vertEdges[begin + i]];
-    const float* childSharpness = &in.childEdgeSharpness[begin];
+    const float* childSharpness = in.childEdgeSharpness.data() + begin;
     const float pVertex = t.vertSharpness[v], cVertex = decrementSharpness(pVertex);
     const VertexRule pRule = vertexRule(pVertex, countSharp(parentSharpness.data(), n));
     const VertexRule cRule = vertexRule(cVertex, countSharp(childSharpness, n));
@@ -287,7 +287,7 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
     if (!smooth) {
         in.childEdgeSharpness.resize(t.vertEdges.size());
         for (int v = 0; v < t.numVertices; ++v)
-            childEdgeSharpnessAtVertex(t, v, options.creaseMethod, &in.childEdgeSharpness[t.vertEdgeOffsets[v]]);
+            childEdgeSharpnessAtVertex(t, v, options.creaseMethod, in.childEdgeSharpness.data() + t.vertEdgeOffsets[v]);
     }
 
     // Reserve an upper bound of the entries: untouched reserved pages cost nothing, while

@@ -108,7 +108,7 @@ void flagEdges(Topology& t) {
     t.edgeFlags.assign(ne, 0);
     for (int e = 0; e < ne; ++e) {
         const int nf = t.edgeFaceCount(e);
-        const int* faces = &t.edgeFaces[t.edgeFaceOffsets[e]];
+        const int* faces = t.edgeFaces.data() + t.edgeFaceOffsets[e];
         if (nf == 1) {
             t.edgeFlags[e] |= kEdgeBoundary;
         } else if (nf > 2) {
@@ -131,7 +131,7 @@ void flagEdges(Topology& t) {
 bool isSingleFan(const Topology& t, int v, int boundaryEdges) {
     const int nf = t.vertexFaceCount(v);
     if (nf == 0) return true;
-    const int* faces = &t.vertFaces[t.vertFaceOffsets[v]];
+    const int* faces = t.vertFaces.data() + t.vertFaceOffsets[v];
     auto outgoing = [&](int f) { return t.faceEdges[cornerOf(t, f, v)]; };
     auto incoming = [&](int f) {
         const int c = cornerOf(t, f, v);
@@ -147,7 +147,7 @@ bool isSingleFan(const Topology& t, int v, int boundaryEdges) {
         ++visited;
         const int e = outgoing(f);
         if (t.edgeFlags[e] & kEdgeBoundary) break;
-        const int* ef = &t.edgeFaces[t.edgeFaceOffsets[e]];
+        const int* ef = t.edgeFaces.data() + t.edgeFaceOffsets[e];
         f = ef[0] == f ? ef[1] : ef[0];
         if (f == start) break;
     }
