@@ -39,8 +39,10 @@ struct Options {
 // Sharpness at or above this value is infinitely sharp.
 constexpr float kInfiniteSharpness = 10.0f;
 
-// The mesh as plain arrays; nothing is copied until the Refiner is built. A face corner equal to
-// the corner before it is a collapsed edge and is dropped (`4 3 5 5` is the triangle `4 3 5`).
+// The mesh as plain arrays; nothing is copied until the Refiner is built. A face that repeats a
+// vertex is read as the simple loops it walks around (far/face_loops.h): `4 3 5 5` is the
+// triangle `4 3 5`, `1 2 3 1 4 5` the triangles `1 2 3` and `1 4 5`, and `1 1 2 2` has no area
+// and is left out (Refiner::warnings() says so, except for collapsed edges like `4 3 5 5`).
 struct TopologyDescriptor {
     int numVertices = 0;
     int numFaces = 0;

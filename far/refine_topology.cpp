@@ -96,10 +96,10 @@ private:
         if (WithEdges) c_.faceEdges.resize(c_.faceVerts.size());
         forEach(nf, [&](int f) {
             const int b = p_.faceOffsets[f], n = p_.faceSize(f), first = firstChildFace_[f];
-            int* offsets = &c_.faceOffsets[first];
+            int* offsets = c_.faceOffsets.data() + first;
             const int corner = 4 * b;
-            int* verts = &c_.faceVerts[corner];
-            int* edges = WithEdges ? &c_.faceEdges[corner] : nullptr;
+            int* verts = c_.faceVerts.data() + corner;
+            int* edges = WithEdges ? c_.faceEdges.data() + corner : nullptr;
             // The edge is computed only when kept (a faces-only level skips the lookups).
             auto put = [&](int k, int vertex, auto edge) {
                 verts[k] = vertex;
@@ -162,7 +162,7 @@ private:
         c_.edgeFaceOffsets[numChildEdges] = interiorBase + 2 * (numChildEdges - 2 * ne);
         c_.edgeFaces.resize(c_.edgeFaceOffsets[numChildEdges]);
         forEach(ne, [&](int e) {
-            int* out = &c_.edgeFaces[c_.edgeFaceOffsets[2 * e]];
+            int* out = c_.edgeFaces.data() + c_.edgeFaceOffsets[2 * e];
             const int n = p_.edgeFaceCount(e), a = p_.edgeVerts[2 * e];
             for (int i = 0; i < n; ++i) {
                 const int f = p_.edgeFaces[p_.edgeFaceOffsets[e] + i], fn = p_.faceSize(f), j = edgeSlot(f, e);
@@ -176,7 +176,7 @@ private:
         forEach(nf, [&](int f) {
             const int n = p_.faceSize(f), first = firstChildFace_[f];
             for (int j = 0; j < n; ++j) {
-                int* out = &c_.edgeFaces[c_.edgeFaceOffsets[interior(f, j)]];
+                int* out = c_.edgeFaces.data() + c_.edgeFaceOffsets[interior(f, j)];
                 // Quad-like: between child faces j and j+1; triangle: corner face j+1 and the middle.
                 const int next = j + 1 == n ? 0 : j + 1;
                 const int x = n == 3 ? next : j, y = n == 3 ? 3 : next;
@@ -195,7 +195,7 @@ private:
         forEach(nv, [&](int v) { offsets[v + 1] = count(v); });
         for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
         list.resize(offsets[nv]);
-        forEach(nv, [&](int v) { fill(v, &list[offsets[v]]); });
+        forEach(nv, [&](int v) { fill(v, list.data() + offsets[v]); });
     }
 
     // Which parent component child vertex v stands for.

@@ -203,7 +203,7 @@ void vertexMask(const LevelInputs& in, Worker& w, int v) {
     std::vector<float>& parentSharpness = w.parentEdgeSharpness;
     parentSharpness.resize(n);
     for (int i = 0; i < n; ++i) parentSharpness[i] = t.edgeSharpness[t.vertEdges[begin + i]];
-    const float* childSharpness = &in.childEdgeSharpness[begin];
+    const float* childSharpness = in.childEdgeSharpness.data() + begin;
     const float pVertex = t.vertSharpness[v], cVertex = decrementSharpness(pVertex);
     const VertexRule pRule = vertexRule(pVertex, countSharp(parentSharpness.data(), n));
     const VertexRule cRule = vertexRule(cVertex, countSharp(childSharpness, n));
@@ -282,7 +282,7 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
         const bool chaikin = options.creaseMethod == CreaseMethod::Chaikin;  // edge points read both ends
         if (chaikin) in.childSharpnessAtEnds.resize(t.edgeVerts.size());
         for (int v = 0; v < t.numVertices; ++v) {
-            childEdgeSharpnessAtVertex(t, v, options.creaseMethod, &in.childEdgeSharpness[t.vertEdgeOffsets[v]]);
+            childEdgeSharpnessAtVertex(t, v, options.creaseMethod, in.childEdgeSharpness.data() + t.vertEdgeOffsets[v]);
             for (int i = t.vertEdgeOffsets[v]; chaikin && i < t.vertEdgeOffsets[v + 1]; ++i) {
                 const int e = t.vertEdges[i];
                 in.childSharpnessAtEnds[2 * e + (t.edgeVerts[2 * e] == v ? 0 : 1)] = in.childEdgeSharpness[i];

@@ -1,6 +1,8 @@
 // Connectivity from face-vertex lists: edges, incidences and boundary / non-manifold / seam flags.
 #include "far/topology.h"
 
+#include "far/face_loops.h"
+
 #include <algorithm>
 #include <string>
 #include <utility>
@@ -111,7 +113,7 @@ void flagEdges(Topology& t) {
     t.edgeFlags.assign(ne, 0);
     for (int e = 0; e < ne; ++e) {
         const int nf = t.edgeFaceCount(e);
-        const int* faces = &t.edgeFaces[t.edgeFaceOffsets[e]];
+        const int* faces = t.edgeFaces.data() + t.edgeFaceOffsets[e];
         if (nf == 1) {
             t.edgeFlags[e] |= kEdgeBoundary;
         } else if (nf > 2) {
@@ -134,7 +136,7 @@ void flagEdges(Topology& t) {
 bool isSingleFan(const Topology& t, int v, int boundaryEdges) {
     const int nf = t.vertexFaceCount(v);
     if (nf == 0) return true;
-    const int* faces = &t.vertFaces[t.vertFaceOffsets[v]];
+    const int* faces = t.vertFaces.data() + t.vertFaceOffsets[v];
     auto outgoing = [&](int f) { return t.faceEdges[cornerOf(t, f, v)]; };
     auto incoming = [&](int f) {
         const int c = cornerOf(t, f, v);
@@ -150,7 +152,7 @@ bool isSingleFan(const Topology& t, int v, int boundaryEdges) {
         ++visited;
         const int e = outgoing(f);
         if (t.edgeFlags[e] & kEdgeBoundary) break;
-        const int* ef = &t.edgeFaces[t.edgeFaceOffsets[e]];
+        const int* ef = t.edgeFaces.data() + t.edgeFaceOffsets[e];
         f = ef[0] == f ? ef[1] : ef[0];
         if (f == start) break;
     }
@@ -229,25 +231,43 @@ int findEdge(const Topology& t, int a, int b) {
     return -1;
 }
 
+namespace {
+
+std::string describeLoops(const FaceLoops& loops) {
+    if (loops.repeated < 0) return "has fewer than 3 distinct corners: no area, left out";
+    std::string text = "appears again further on: the face pinches there";
+    if (loops.loops == 0) return text + " into pieces of fewer than 3 corners; no area, left out";
+    text += " and is read as " + std::to_string(loops.loops) + (loops.loops == 1 ? " face" : " faces");
+    if (loops.leftOut > 0) text += " (" + std::to_string(loops.leftOut) + " piece of fewer than 3 corners left out)";
+    return text;
+}
+
+}  // namespace
+
 Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
                            std::vector<TopologyDiagnostic>* warnings) {
     validateDescriptor(desc);
     Topology t;
     t.numVertices = desc.numVertices;
-    // Corners repeating the previous corner (collapsed edges) are dropped: a quad with a collapsed
-    // edge is a triangle. validateDescriptor() has rejected every other repeat.
-    t.faceOffsets.assign(1, 0);
-    t.faceOffsets.reserve(desc.numFaces + 1);
+    // Faces become the simple loops they walk around (face_loops.h); firstFace maps each face of
+    // the descriptor to its loops, for holes.
+    std::vector<int> sizes, firstFace(size_t(desc.numFaces) + 1, 0);
+    sizes.reserve(size_t(desc.numFaces));
+    FaceLoopSplitter splitter(desc.numVertices);
     const int* verts = desc.faceVertIndices;
     for (int f = 0; f < desc.numFaces; ++f) {
         const int n = desc.numVertsPerFace[f];
-        for (int i = 0; i < n; ++i)
-            if (verts[i] != verts[i == 0 ? n - 1 : i - 1]) t.faceVerts.push_back(verts[i]);
-        t.faceOffsets.push_back(int(t.faceVerts.size()));
+        const FaceLoops loops = splitter.split(verts, n, t.faceVerts, sizes);
         verts += n;
+        firstFace[size_t(f) + 1] = int(sizes.size());
+        if (warnings && (loops.repeated >= 0 || loops.loops == 0))
+            warnings->push_back({TopologyDiagnostic::Component::Face, f, loops.repeated,
+                                 describeLoops(loops)});
     }
+    t.faceOffsets.assign(sizes.size() + 1, 0);
+    for (std::size_t f = 0; f < sizes.size(); ++f) t.faceOffsets[f + 1] = t.faceOffsets[f] + sizes[f];
     if (options.leftHanded) {  // store counter-clockwise: keep the first corner, reverse the rest
-        for (int f = 0; f < desc.numFaces; ++f)
+        for (int f = 0; f < t.numFaces(); ++f)
             std::reverse(t.faceVerts.begin() + t.faceOffsets[f] + 1, t.faceVerts.begin() + t.faceOffsets[f + 1]);
     }
     completeTopology(t);
@@ -265,7 +285,10 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
         t.edgeSharpness[e] = desc.creaseWeights[i];
     }
     for (int i = 0; i < desc.numCorners; ++i) t.vertSharpness[desc.cornerVertexIndices[i]] = desc.cornerWeights[i];
-    for (int i = 0; i < desc.numHoles; ++i) t.faceHole[desc.holeIndices[i]] = 1;
+    for (int i = 0; i < desc.numHoles; ++i) {
+        const int f = desc.holeIndices[i];
+        std::fill(t.faceHole.begin() + firstFace[size_t(f)], t.faceHole.begin() + firstFace[size_t(f) + 1], uint8_t(1));
+    }
 
     // Boundary and non-manifold edges are infinitely sharp.
     for (int e = 0; e < t.numEdges(); ++e)

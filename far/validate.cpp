@@ -33,20 +33,6 @@ void checkSharpness(float s, const std::string& what, Component component, int i
     }
 }
 
-// A vertex listed twice, or -1. Faces are small: pairwise comparison, sorting only long ones.
-int repeatedVertex(std::vector<int>& corners) {
-    const std::size_t n = corners.size();
-    if (n <= 8) {
-        for (std::size_t i = 1; i < n; ++i)
-            for (std::size_t j = 0; j < i; ++j)
-                if (corners[i] == corners[j]) return corners[i];
-        return -1;
-    }
-    std::sort(corners.begin(), corners.end());
-    const auto dup = std::adjacent_find(corners.begin(), corners.end());
-    return dup == corners.end() ? -1 : *dup;
-}
-
 }  // namespace
 
 void validateDescriptor(const TopologyDescriptor& d) {
@@ -60,7 +46,6 @@ void validateDescriptor(const TopologyDescriptor& d) {
     checkArray(d.numHoles, d.holeIndices, "numHoles", "holeIndices");
 
     long long total = 0;
-    std::vector<int> corners;
     for (int f = 0; f < d.numFaces; ++f) {
         const int n = d.numVertsPerFace[f];
         if (n < 3) fail(Component::Face, f, -1, "has " + std::to_string(n) + " vertices; a face needs at least 3");
@@ -71,18 +56,8 @@ void validateDescriptor(const TopologyDescriptor& d) {
             if (verts[i] < 0 || verts[i] >= d.numVertices)
                 fail(Component::Face, f, -1,
                      "vertex index " + std::to_string(verts[i]) + " is out of range [0, " + std::to_string(d.numVertices) + ")");
-        // A corner equal to the one before it (cyclically) is a collapsed edge and is dropped; any
-        // other repeat is an error, and so is a face left with fewer than 3 corners.
-        corners.clear();
-        for (int i = 0; i < n; ++i)
-            if (verts[i] != verts[i == 0 ? n - 1 : i - 1]) corners.push_back(verts[i]);
-        if (corners.size() < 3) {
-            fail(Component::Face, f, verts[0],
-                 "appears more than once, leaving " + std::to_string(corners.size()) +
-                     " distinct corners; a face needs at least 3");
-        }
-        if (const int repeated = repeatedVertex(corners); repeated >= 0)
-            fail(Component::Face, f, repeated, "appears more than once");
+        // Repeated vertices are not an error: the face is read as the loops it walks around
+        // (face_loops.h).
     }
     for (int i = 0; i < d.numCreases; ++i) {
         const int a = d.creaseVertexPairs[2 * i], b = d.creaseVertexPairs[2 * i + 1];

@@ -115,11 +115,133 @@ TEST(Validation, VertexIndexOutOfRange) {
                   "index 1000000", Component::Face, 2);
 }
 
-TEST(Validation, VertexRepeatedInAFace) {
-    expectRefused(cubeWithFace2({0, 4, 0, 1}).descriptor(), {"face 2", "vertex 0", "more than once"}, "0 twice",
-                  Component::Face, 2);
-    expectRefused(cubeWithFace2({5, 4, 5}).descriptor(), {"face 2", "vertex 5", "more than once"}, "triangle 5 4 5",
-                  Component::Face, 2);
+// A face that repeats a vertex is read as the simple loops it walks around (far/face_loops.h):
+// the result must be the same surface, bitwise, as the mesh written with those loops as faces,
+// with a warning naming the face and the vertex.
+void expectSameRefinement(const LocalMesh& degenerate, const LocalMesh& clean, const std::string& what) {
+    for (Scheme scheme : {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly})
+        for (bool leftHanded : {false, true}) {
+            Options o;
+            o.scheme = scheme;
+            o.leftHanded = leftHanded;
+            Refiner a(degenerate.descriptor(), o), b(clean.descriptor(), o);
+            a.refineUniform(2, TopologyDetail::Full);
+            b.refineUniform(2, TopologyDetail::Full);
+            const std::string where = what + " under " + toString(scheme) + (leftHanded ? ", left-handed" : "");
+            for (int L = 0; L <= 2; ++L) {
+                EXPECT_EQ(a.level(L).faceVerts, b.level(L).faceVerts) << where << " level " << L;
+                EXPECT_EQ(a.level(L).faceOffsets, b.level(L).faceOffsets) << where << " level " << L;
+                EXPECT_EQ(a.level(L).faceHole, b.level(L).faceHole) << where << " level " << L;
+            }
+            for (int L = 1; L <= 2; ++L) {
+                const StencilTable &ta = a.levelStencils(L), &tb = b.levelStencils(L);
+                EXPECT_EQ(ta.indices, tb.indices) << where << " level " << L;
+                EXPECT_EQ(ta.offsets, tb.offsets) << where << " level " << L;
+                EXPECT_EQ(ta.weights, tb.weights) << where << " level " << L;
+            }
+        }
+}
+
+const TopologyDiagnostic& onlyWarning(const LocalMesh& m) {
+    static std::vector<TopologyDiagnostic> kept;
+    Refiner refiner(m.descriptor(), Options());
+    kept = refiner.warnings();
+    if (kept.size() != 1) throw std::runtime_error(std::to_string(kept.size()) + " warnings, expected 1");
+    return kept[0];
+}
+
+TEST(Validation, BowTieFaceIsReadAsItsTwoLoops) {
+    LocalMesh bowTie, triangles;
+    bowTie.numVertices = triangles.numVertices = 5;
+    bowTie.addFace({0, 1, 2, 0, 3, 4});
+    triangles.addFace({0, 1, 2});
+    triangles.addFace({0, 3, 4});
+    expectSameRefinement(bowTie, triangles, "bow tie 0 1 2 0 3 4");
+    const TopologyDiagnostic& w = onlyWarning(bowTie);
+    EXPECT_EQ(int(w.component), int(Component::Face));
+    EXPECT_EQ(w.index, 0);
+    EXPECT_EQ(w.vertex, 0);
+    EXPECT_NE(w.message().find("read as 2 faces"), std::string::npos) << w.message();
+    // A hole on the face makes both loops holes.
+    LocalMesh holed = bowTie;
+    const int hole = 0;
+    TopologyDescriptor d = holed.descriptor();
+    d.numHoles = 1;
+    d.holeIndices = &hole;
+    Refiner refiner(d, Options());
+    EXPECT_EQ(refiner.level(0).faceHole, (std::vector<uint8_t>{1, 1}));
+}
+
+// `f 1 1 2 2` (OpenSubdiv's catmark_nonman_edges has one) and `f 1 2 1 3` have no area: left out,
+// so the cube with such a face refines exactly as the cube.
+TEST(Validation, FacesWithoutAreaAreLeftOut) {
+    const LocalMesh plain = cube();
+    struct Case {
+        std::vector<int> corners;
+        int vertex;
+        const char* text;
+    };
+    for (const Case& c : {Case{{0, 0, 1, 1}, -1, "fewer than 3 distinct corners"},
+                          Case{{0, 1, 0, 2}, 0, "appears again further on"},
+                          Case{{5, 5, 5}, -1, "fewer than 3 distinct corners"},
+                          Case{{2, 3, 2, 3}, 2, "pieces of fewer than 3 corners"}}) {
+        LocalMesh m = plain;
+        m.addFace(c.corners);
+        std::string what = "cube + face";
+        for (int v : c.corners) what += " " + std::to_string(v);
+        expectSameRefinement(m, plain, what);
+        const TopologyDiagnostic& w = onlyWarning(m);
+        EXPECT_EQ(w.index, 6) << what;
+        EXPECT_EQ(w.vertex, c.vertex) << what;
+        EXPECT_NE(w.message().find(c.text), std::string::npos) << what << ": " << w.message();
+        EXPECT_NE(w.message().find("left out"), std::string::npos) << what << ": " << w.message();
+    }
+}
+
+// A pinched quad with one real loop: `0 1 3 2 1` is the quad's loop 1 3 2 ... read as the
+// triangle 1 3 2 plus the dropped digon 0 1.
+TEST(Validation, PinchedFaceKeepsItsRealLoop) {
+    LocalMesh pinched, clean;
+    pinched.numVertices = clean.numVertices = 4;
+    pinched.addFace({0, 1, 3, 2, 1});
+    clean.addFace({1, 3, 2});
+    expectSameRefinement(pinched, clean, "0 1 3 2 1");
+    EXPECT_NE(onlyWarning(pinched).message().find("1 piece of fewer than 3 corners left out"), std::string::npos)
+        << onlyWarning(pinched).message();
+}
+
+// No faces, and vertices no face uses (the last one too), are valid input: such vertices are
+// isolated and stay put at every level. (Indexing one past the end of an incidence array here
+// aborted under _GLIBCXX_ASSERTIONS.)
+TEST(Validation, IsolatedVerticesAndNoFaces) {
+    for (int extra : {0, 1, 3}) {
+        LocalMesh m;
+        if (extra == 0) {
+            m.numVertices = 4;  // no faces at all
+        } else {
+            m = cube();
+            m.numVertices += extra;  // unused vertices after the last used one
+        }
+        for (Scheme scheme : {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly}) {
+            Options o;
+            o.scheme = scheme;
+            Refiner refiner(m.descriptor(), o);
+            refiner.refineUniform(3);
+            const StencilTable table = refiner.factorizedStencils(3);
+            const int n = table.numStencils();
+            ASSERT_GE(n, m.numVertices);
+            // The isolated vertices are the last vertex points: identity stencils.
+            for (int k = 0; k < (extra == 0 ? m.numVertices : extra); ++k) {
+                const int i = n - 1 - k, v = m.numVertices - 1 - k;
+                ASSERT_EQ(table.size(i), 1) << toString(scheme);
+                EXPECT_EQ(table.indices[size_t(table.offsets[i])], v) << toString(scheme);
+                EXPECT_EQ(table.weightsOf(i)[0], 1.0f) << toString(scheme);
+            }
+            if (extra == 0) {
+                EXPECT_EQ(refiner.level(3).numFaces(), 0);
+            }
+        }
+    }
 }
 
 // OpenSubdiv warns about a crease on a pair that is not an edge and goes on: so does quadtri, and

@@ -1,0 +1,38 @@
+// How a face of the input becomes faces of level 0. Modelling tools and OpenSubdiv's own shapes
+// have faces that repeat a vertex; each is read as the simple loops it walks around:
+//   - a corner equal to the one before it (cyclically) is a collapsed edge and is dropped, so the
+//     quad `4 3 5 5` left at poles is the triangle `4 3 5`;
+//   - a vertex met again further on closes a loop there: `1 2 3 1 4 5` (a bow tie) is the two
+//     triangles `1 2 3` and `1 4 5`;
+//   - a loop with fewer than 3 corners (`1 1 2 2`, or the pieces of `1 2 1 3`) has no area and is
+//     left out.
+// The loops keep the face's orientation, so neighbours still agree on their shared edges.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace quadtri {
+
+// What splitting one face did, for the warning that names it.
+struct FaceLoops {
+    int loops = 0;          // loops kept (faces of level 0)
+    int leftOut = 0;        // loops of fewer than 3 corners
+    int repeated = -1;      // the first vertex met again further on, or -1
+};
+
+// Splits faces into simple loops; `numVertices` bounds the indices (validated beforehand).
+class FaceLoopSplitter {
+public:
+    explicit FaceLoopSplitter(int numVertices) : position_(std::size_t(numVertices), -1) {}
+
+    // Appends the loops of face `verts[0 .. n)` to `faceVerts`, one size per loop to `faceSizes`.
+    // Linear in n.
+    FaceLoops split(const int* verts, int n, std::vector<int>& faceVerts, std::vector<int>& faceSizes);
+
+private:
+    std::vector<int> position_;  // per vertex: its index on the walk, or -1 (reset after each face)
+    std::vector<int> walk_;
+};
+
+}  // namespace quadtri
