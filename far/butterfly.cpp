@@ -203,43 +203,56 @@ void CatmarkButterflyMasks::seamDiagonal(int s, int t, int towardsSeam, int away
 
 // Zorin's modified Butterfly seen from `centre` along edge e, the ring starting at e's other end:
 // ¾ at the centre, K = 3: (5/12, −1/12, −1/12), K = 4: (3/8, 0, −1/8, 0), else
-// (¼ + cos 2πj/K + ½ cos 4πj/K)/K. The ring and the weights are kept for the next edge (a
-// vertex's edges mostly come one after another), so a mask costs its K entries, not a walk.
+// (¼ + cos 2πj/K + ½ cos 4πj/K)/K. A mask costs its K + 1 entries: the weights are computed once
+// per valence, and a ring longer than a few steps is walked once per centre (a vertex's edges
+// mostly come one after another; short rings, walked per edge, do not evict it).
 void CatmarkButterflyMasks::zorinEdge(int centre, int e, double scale) {
     const int other = t_.otherVertex(e, centre), firstFace = t_.edgeFaces[t_.edgeFaceOffsets[e]];
-    if (ringCentre_ != centre) walkRing(centre, other, firstFace);
-    const int k = int(ring_.size());
-    if (zorinValence_ != k) {
-        zorinValence_ = k;
-        zorinWeights_.resize(size_t(k));
-        for (int j = 0; j < k; ++j) {
-            double& s = zorinWeights_[size_t(j)];
-            if (k == 3)
-                s = j == 0 ? 5.0 / 12.0 : -1.0 / 12.0;
-            else if (k == 4)
-                s = j == 0 ? 0.375 : j == 2 ? -0.125 : 0.0;
-            else
-                s = (0.25 + std::cos(2.0 * M_PI * j / k) + 0.5 * std::cos(4.0 * M_PI * j / k)) / k;
-        }
+    const int k = t_.vertexEdgeCount(centre);
+    std::vector<int>* ring = &shortRing_;
+    if (k > kShortRing) {
+        ring = &longRing_;
+        if (longRingCentre_ != centre) walkRing(centre, other, firstFace, longRing_);
+        longRingCentre_ = centre;
+    } else {
+        walkRing(centre, other, firstFace, shortRing_);
     }
+    const std::vector<double>& weights = zorinWeights(int(ring->size()));
     // The ring is read from `other` on, first into e's first face: the order (and so every bit
     // of the table) does not depend on which edge the ring was walked from.
+    const int n = int(ring->size());
     int start = 0;
-    while (ring_[size_t(start)] != other) ++start;
-    const int step = ring_[size_t((start + 1) % k)] == thirdVertex(firstFace, centre, other) ? 1 : k - 1;
+    while ((*ring)[size_t(start)] != other) ++start;
+    const int step = (*ring)[size_t((start + 1) % n)] == thirdVertex(firstFace, centre, other) ? 1 : n - 1;
     acc_.add(centre, 0.75 * scale);
-    for (int j = 0, i = start; j < k; ++j, i = (i + step) % k) acc_.add(ring_[size_t(i)], zorinWeights_[size_t(j)] * scale);
+    for (int j = 0, i = start; j < n; ++j, i = (i + step) % n) acc_.add((*ring)[size_t(i)], weights[size_t(j)] * scale);
+}
+
+const std::vector<double>& CatmarkButterflyMasks::zorinWeights(int k) {
+    if (int(weightsByValence_.size()) <= k) weightsByValence_.resize(size_t(k) + 1);
+    std::vector<double>& weights = weightsByValence_[size_t(k)];
+    if (weights.empty()) {
+        weights.resize(size_t(k));
+        for (int j = 0; j < k; ++j) {
+            if (k == 3)
+                weights[size_t(j)] = j == 0 ? 5.0 / 12.0 : -1.0 / 12.0;
+            else if (k == 4)
+                weights[size_t(j)] = j == 0 ? 0.375 : j == 2 ? -0.125 : 0.0;
+            else
+                weights[size_t(j)] = (0.25 + std::cos(2.0 * M_PI * j / k) + 0.5 * std::cos(4.0 * M_PI * j / k)) / k;
+        }
+    }
+    return weights;
 }
 
 // The centre's neighbours in fan order from `other`, through `face` first: each step crosses the
 // face's other edge at the centre, found among the face's corners.
-void CatmarkButterflyMasks::walkRing(int centre, int other, int face) {
+void CatmarkButterflyMasks::walkRing(int centre, int other, int face, std::vector<int>& ring) const {
     const int valence = t_.vertexEdgeCount(centre);
-    ringCentre_ = centre;
-    ring_.assign(1, other);
-    while (int(ring_.size()) < valence && face >= 0) {
-        ring_.push_back(thirdVertex(face, centre, ring_.back()));
-        face = otherFace(edgeOfFace(face, centre, ring_.back()), face);
+    ring.assign(1, other);
+    while (int(ring.size()) < valence && face >= 0) {
+        ring.push_back(thirdVertex(face, centre, ring.back()));
+        face = otherFace(edgeOfFace(face, centre, ring.back()), face);
     }
 }
 

@@ -52,7 +52,8 @@ private:
     void halfButterfly(int a, int b, int f, double scale);
     void seamDiagonal(int s, int t, int towardsSeam, int away, double scale);
     void zorinEdge(int centre, int edge, double scale);
-    void walkRing(int centre, int other, int face);
+    void walkRing(int centre, int other, int face, std::vector<int>& ring) const;
+    const std::vector<double>& zorinWeights(int valence);
 
     // Curve rules (butterfly_curve.cpp).
     void creaseVertex(int v, const float* edgeSharpness, double scale);
@@ -76,11 +77,14 @@ private:
     SparseAccumulator& acc_;
     std::vector<Kind> kind_;
     std::vector<uint8_t> sharpEdges_;  // per vertex: its sharp edges, counted up to 3
-    // Zorin's rule: the last centre's neighbours in fan order, and the weights of the last valence.
-    int ringCentre_ = -1;
-    std::vector<int> ring_;
-    int zorinValence_ = 0;
-    std::vector<double> zorinWeights_;
+    // Zorin's rule: a centre's neighbours in fan order (a long ring kept for the next edge of
+    // its centre) and the weights per valence, computed at its first use (their total size is at
+    // most the level's edge ends: each valence seen is a vertex's edge count).
+    static constexpr int kShortRing = 16;
+    std::vector<int> shortRing_;
+    int longRingCentre_ = -1;
+    std::vector<int> longRing_;
+    std::vector<std::vector<double>> weightsByValence_;
 };
 
 }  // namespace quadtri
