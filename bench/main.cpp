@@ -51,8 +51,7 @@ ControlMesh makeMesh(const std::string& name) {
 
 // Tori: quads under Catmull-Clark and triangles under Loop on both sides, mixed quadtri alone.
 // The sphere with triangle fans is a mixed mesh: every scheme, quadtri alone; with quad fans it is
-// Catmull-Clark on both sides. --quick keeps the sphere at level 1, where the cubic Zorin rule
-// once cost seconds.
+// Catmull-Clark on both sides. --quick keeps the spheres at level 1.
 std::vector<CaseSpec> caseList(bool quick) {
     std::vector<CaseSpec> cases;
     const std::vector<std::pair<int, int>> sizes =
@@ -71,7 +70,10 @@ std::vector<CaseSpec> caseList(bool quick) {
         if (quick && scheme != Scheme::CatmarkButterfly && scheme != Scheme::SchaeferWarren) continue;
         for (int level = 1; level <= sphereLevels; ++level) cases.push_back({mixedSphere, scheme, std::nullopt, level});
     }
-    for (int level = 1; level <= sphereLevels; ++level) cases.push_back({quadSphere, Scheme::StamLoop, OsdScheme::Catmark, level});
+    // Level 3 is left out: OpenSubdiv's factorized table is dense around the poles there (every
+    // vertex near one reads its whole ring), and each of its timed builds takes minutes.
+    for (int level = 1; level <= std::min(sphereLevels, 2); ++level)
+        cases.push_back({quadSphere, Scheme::StamLoop, OsdScheme::Catmark, level});
     return cases;
 }
 
