@@ -1,8 +1,10 @@
 #include "far/refiner.h"
 
+#include <stdexcept>
 #include <string>
 
 #include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 
 #include "far/refine_topology.h"
 #include "far/rules.h"
@@ -37,8 +39,36 @@ std::size_t Refiner::estimateLevelBytes(int L) const {
     // masks are larger than `entries` counts; the factor 2 covers them.
     const std::size_t tableBytes = 2 * (entries * 4 + vertices * 8);
     const std::size_t outputBytes = vertices * 3 * sizeof(float);
-    return topologyBytes + tableBytes + outputBytes;
+    // Per thread, a sparse accumulator over the parent's vertices; for Schaefer-Warren, each
+    // parent vertex's two unzipped copies (one entry per network neighbour, two per vertex).
+    const std::size_t threads = std::size_t(tbb::this_task_arena::max_concurrency());
+    const std::size_t scratchBytes = threads * std::size_t(p.numVertices) * 16;
+    const std::size_t unzipBytes = options_.scheme == Scheme::SchaeferWarren
+                                       ? 2 * (std::size_t(p.numVertices) * (8 + 12) + 2 * parentEdges * 12)
+                                       : 0;
+    return topologyBytes + tableBytes + outputBytes + scratchBytes + unzipBytes;
 }
+
+std::size_t Refiner::bytes() const {
+    std::size_t total = 0;
+    for (const Topology& t : levels_) total += bytesOf(t);
+    for (const StencilTable& t : levelTables_) total += t.bytes();
+    return total;
+}
+
+namespace {
+
+std::string budgetText(std::size_t budget, std::size_t held) {
+    return "the budget of " + std::to_string(budget) + " bytes (Options::memoryBudgetBytes; the Refiner holds " +
+           std::to_string(held) + ")";
+}
+
+// Bytes of a float table converted to a double one (toDoubleTable).
+std::size_t doubleBytes(const StencilTable& t) {
+    return std::size_t(2 * t.numStencils()) * sizeof(int) + t.numEntries() * (sizeof(int) + sizeof(double));
+}
+
+}  // namespace
 
 void Refiner::completeLevel(int L) {
     if (detail_[L] == TopologyDetail::Full) return;
@@ -52,11 +82,11 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
     while (this->maxLevel() < maxLevel) {
         const int L = this->maxLevel() + 1;
         completeLevel(L - 1);  // within the budget level L - 1 was built under
-        const std::size_t estimate = estimateLevelBytes(L);
-        if (estimate > options_.memoryBudgetBytes)
+        const std::size_t estimate = estimateLevelBytes(L), held = bytes();
+        if (held > options_.memoryBudgetBytes || estimate > options_.memoryBudgetBytes - held)
             throw TopologyError("level " + std::to_string(L) + " needs an estimated " + std::to_string(estimate) +
-                                " bytes of tables and output, over the budget of " +
-                                std::to_string(options_.memoryBudgetBytes) + " bytes (Options::memoryBudgetBytes)");
+                                " bytes of topology, tables and output, over " +
+                                budgetText(options_.memoryBudgetBytes, held));
         const Topology& parent = levels_.back();
         const ChildNumbering numbering = numberChildren(parent);
         const TopologyDetail detail = L == maxLevel ? lastLevel : TopologyDetail::Full;
@@ -76,8 +106,34 @@ StencilTable Refiner::factorizedStencils(int L) const {
     if (L < 1 || L > maxLevel())
         throw TopologyError("factorized stencils asked for level " + std::to_string(L) + "; refined levels are 1.." +
                             std::to_string(maxLevel()));
+    const std::size_t budget = options_.memoryBudgetBytes, held = bytes();
+    std::size_t used = 0;  // bytes of the double tables alive at this point
+    auto refuse = [&] {
+        return TopologyError("the factorized stencils of level " + std::to_string(L) + " need more than " +
+                             budgetText(budget, held));
+    };
+    auto reserve = [&](std::size_t more) {
+        if (held > budget || used > budget - held || more > budget - held - used) throw refuse();
+        used += more;
+    };
+    reserve(doubleBytes(levelTables_[0]));
     StencilTableD composed = toDoubleTable(levelTables_[0]);
-    for (int l = 2; l <= L; ++l) composed = composeStencils(toDoubleTable(levelTables_[l - 1]), composed);
+    for (int l = 2; l <= L; ++l) {
+        reserve(doubleBytes(levelTables_[l - 1]));
+        const StencilTableD outer = toDoubleTable(levelTables_[l - 1]);
+        try {
+            StencilTableD next = composeStencils(outer, composed, budget - held - used);
+            used -= doubleBytes(levelTables_[l - 1]);
+            used += bytesOf(next) - bytesOf(composed);
+            composed = std::move(next);
+        } catch (const std::length_error&) {
+            throw refuse();
+        }
+    }
+    // The float table (an index per entry, two ints per stencil, a weight pool of at most one
+    // float per entry) and a 3-float output per stencil, while the double table still lives.
+    const std::size_t n = composed.sizes.size(), entries = composed.indices.size();
+    reserve(entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float)));
     return toFloatTable(composed);
 }
 

@@ -43,6 +43,14 @@ std::string TopologyDiagnostic::message() const {
     return text + problem;
 }
 
+std::size_t bytesOf(const Topology& t) {
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(t.faceOffsets) + bytes(t.faceVerts) + bytes(t.faceEdges) + bytes(t.faceHole) + bytes(t.edgeVerts) +
+           bytes(t.edgeFaceOffsets) + bytes(t.edgeFaces) + bytes(t.edgeSharpness) + bytes(t.edgeFlags) +
+           bytes(t.vertFaceOffsets) + bytes(t.vertFaces) + bytes(t.vertEdgeOffsets) + bytes(t.vertEdges) +
+           bytes(t.vertSharpness) + bytes(t.vertFlags);
+}
+
 VertexFaceCounts countVertexFaces(const Topology& t, int v) {
     VertexFaceCounts counts;
     for (int i = t.vertFaceOffsets[v]; i < t.vertFaceOffsets[v + 1]; ++i) {
@@ -243,6 +251,15 @@ std::string describeLoops(const FaceLoops& loops) {
 Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
                            std::vector<TopologyDiagnostic>* warnings) {
     validateDescriptor(desc);
+    // Level 0 and its scratch: per vertex its incidence offsets, flags, sharpness and edge
+    // buckets; per corner its face, edge and incidence entries and at most one edge. Checked
+    // before anything is allocated: a descriptor's counts need not match what its arrays hold.
+    std::size_t corners = 0;
+    for (int f = 0; f < desc.numFaces; ++f) corners += std::size_t(desc.numVertsPerFace[f]);
+    const std::size_t estimate = std::size_t(desc.numVertices) * 32 + corners * 64 + std::size_t(desc.numFaces) * 16;
+    if (estimate > options.memoryBudgetBytes)
+        throw TopologyError("level 0 needs an estimated " + std::to_string(estimate) + " bytes, over the budget of " +
+                            std::to_string(options.memoryBudgetBytes) + " bytes (Options::memoryBudgetBytes)");
     Topology t;
     t.numVertices = desc.numVertices;
     // Faces become the simple loops they walk around (face_loops.h); firstFace maps each face of
