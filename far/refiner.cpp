@@ -33,10 +33,36 @@ std::size_t Refiner::estimateLevelBytes(int L) const {
     const std::size_t edges = 2 * parentEdges + corners / 4;
     const std::size_t vertices = facePoints + parentEdges + p.numVertices;
     entries += 4 * parentEdges + p.numVertices;
+    if (options_.scheme == Scheme::CatmarkButterfly) {
+        // Zorin's edge masks read the whole ring of an extraordinary vertex with triangles only:
+        // each of its K edges' masks has up to K + 1 more entries than counted above.
+        std::vector<std::size_t> corners(std::size_t(p.numVertices), 0);
+        std::vector<uint8_t> touchesQuad(std::size_t(p.numVertices), 0);
+        for (int f = 0; f < p.numFaces(); ++f)
+            for (int i = p.faceOffsets[f]; i < p.faceOffsets[f + 1]; ++i) {
+                ++corners[std::size_t(p.faceVerts[i])];
+                touchesQuad[std::size_t(p.faceVerts[i])] |= p.faceSize(f) != 3;
+            }
+        auto extraordinary = [&](int v, std::size_t k) { return !touchesQuad[std::size_t(v)] && k != 6; };
+        if (p.vertEdgeOffsets.size() == std::size_t(p.numVertices) + 1) {
+            // Zorin's rule applies where both ends have triangles only.
+            for (int e = 0; e < p.numEdges(); ++e) {
+                const int a = p.edgeVerts[2 * e], b = p.edgeVerts[2 * e + 1];
+                if (touchesQuad[std::size_t(a)] || touchesQuad[std::size_t(b)]) continue;
+                for (int v : {a, b})
+                    if (extraordinary(v, std::size_t(p.vertexEdgeCount(v)))) entries += std::size_t(p.vertexEdgeCount(v)) + 1;
+            }
+        } else {
+            // Faces only: a vertex has at most one edge more than it has corners.
+            for (int v = 0; v < p.numVertices; ++v) {
+                const std::size_t k = corners[std::size_t(v)] + 1;
+                if (extraordinary(v, k)) entries += k * (k + 1);
+            }
+        }
+    }
     const std::size_t topologyBytes = corners * 16 + edges * 25 + vertices * 22 + faces * 5;
     // An index per entry and two offsets per stencil (weights are pooled), twice over: the parts
-    // built by other threads are copied into the table (buildLevelStencils). Catmark-butterfly's
-    // masks are larger than `entries` counts; the factor 2 covers them.
+    // built by other threads are copied into the table (buildLevelStencils).
     const std::size_t tableBytes = 2 * (entries * 4 + vertices * 8);
     const std::size_t outputBytes = vertices * 3 * sizeof(float);
     // Per thread, a sparse accumulator over the parent's vertices; for Schaefer-Warren, each
