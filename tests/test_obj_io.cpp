@@ -154,8 +154,11 @@ TEST(ObjIo, NumberErrors) {
     expectError("v 0 0 0\nv 1 1.5.2 0\n", 2, "cannot parse coordinate '1.5.2'");
     expectError("v 0 0 nan\n", 1, "cannot parse coordinate");
     expectError("v 0 0 +-1\n", 1, "cannot parse coordinate '+-1'");
-    expectError("v 0 0 1e60\n", 1, "cannot parse coordinate '1e60'");
-    expectError("v 0 0\n", 1, "vertex needs 3 coordinates");
+    expectError("v 0 0 1e60\n", 1, "coordinate '1e60' is beyond the float range");
+    expectError("v 0 0\n", 1, "v takes 3 or 4 coordinates (6 with colour), got 2");
+    expectError("v 0 0 0 1 1\n", 1, "v takes 3 or 4 coordinates (6 with colour), got 5");
+    expectError("v 0 0 0 1 1 1 1\n", 1, "v takes 3 or 4 coordinates (6 with colour), got 7");
+    expectError("v 0 0 0 1 red 1\n", 1, "cannot parse colour 'red'");
     expectError(std::string(kQuad) + "f 1 2 a\n", 5, "cannot parse face index 'a'");
     expectError(std::string(kQuad) + "f 1 2 99999999999\n", 5, "cannot parse face index");
     expectError(std::string(kQuad) + "t crease 2/1/0 0 1 sharp\n", 5, "cannot parse tag value 'sharp'");
@@ -237,7 +240,7 @@ TEST(ObjIo, WriteToUnwritablePath) {
         writeObj("/nonexistent/dir/out.obj", positions.data(), t);
         FAIL() << "no error";
     } catch (const ObjError& e) {
-        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/out.obj: cannot write file");
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/out.obj: cannot write file (No such file or directory)");
     }
 }
 

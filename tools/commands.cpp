@@ -1,7 +1,9 @@
 #include "tools/commands.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -19,6 +21,11 @@ namespace {
 
 io::ObjMesh loadMesh(const MeshArgs& args) {
     io::ObjMesh mesh = io::readObj(args.input);
+    if (mesh.numFaces() == 0)
+        throw io::ObjError(args.input + ": no faces to refine (" +
+                           (mesh.numVertices() ? std::to_string(mesh.numVertices()) + " vertices and no f line"
+                                               : std::string("no v or f line")) +
+                           ")");
     for (const std::string& w : mesh.warnings) std::cerr << "quadtri: warning: " << w << "\n";
     return mesh;
 }
@@ -27,12 +34,54 @@ io::ObjMesh loadMesh(const MeshArgs& args) {
 Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options) {
     try {
         Refiner refiner(mesh.descriptor(), options);
-        for (const TopologyDiagnostic& w : refiner.warnings())
-            std::cerr << "quadtri: warning: " << mesh.locate(w) << w.message() << "\n";
+        for (const TopologyDiagnostic& w : refiner.warnings()) std::cerr << "quadtri: warning: " << mesh.describe(w) << "\n";
         return refiner;
     } catch (const TopologyError& e) {
-        throw io::ObjError(mesh.locate(e.diagnostic()) + e.what());
+        throw io::ObjError(mesh.describe(e.diagnostic()));
     }
+}
+
+// "4 GiB (4294967296 bytes)": the size in the largest binary unit that keeps it at least 1.
+std::string bytesText(std::size_t bytes) {
+    static const char* const units[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+    double value = double(bytes);
+    int unit = 0;
+    while (value >= 1024 && unit < 6) value /= 1024, ++unit;
+    if (unit == 0) return std::to_string(bytes) + " bytes";
+    char text[96];
+    std::snprintf(text, sizeof text, "%.3g %s (%zu bytes)", value, units[unit], bytes);
+    return text;
+}
+
+// refineUniform with a refusal by the memory budget told in the flag's terms.
+void refineWithinBudget(Refiner& refiner, const io::ObjMesh& mesh, int level, TopologyDetail lastLevel) {
+    try {
+        refiner.refineUniform(level, lastLevel);
+    } catch (const TopologyError&) {
+        const int refused = refiner.maxLevel() + 1;
+        const std::size_t estimate = refiner.estimateLevelBytes(refused);
+        const std::size_t budget = refiner.options().memoryBudgetBytes;
+        if (estimate <= budget) throw;
+        throw io::ObjError(mesh.name + ": level " + std::to_string(refused) + " needs an estimated " +
+                           bytesText(estimate) + " for its tables and output, over the memory budget of " +
+                           bytesText(budget) + "; raise --memory-budget (e.g. --memory-budget " +
+                           std::to_string((estimate >> 30) + 1) + "GiB) or ask for fewer levels");
+    }
+}
+
+// Finite input can still overflow: a scheme with weights of both signs sums terms larger than the
+// result. The error names the vertex in the output file's numbering.
+void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, int level, Scheme scheme) {
+    const auto bad = std::find_if(positions.begin(), positions.end(), [](float x) { return !std::isfinite(x); });
+    if (bad == positions.end()) return;
+    float largest = 0;
+    for (float x : mesh.positions) largest = std::max(largest, std::fabs(x));
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  ": level %d: output vertex %zu has coordinate %g; the input's largest coordinate magnitude, %g, "
+                  "leaves no headroom for the %s weights (scale the mesh down)",
+                  level, size_t(bad - positions.begin()) / 3 + 1, double(*bad), double(largest), toString(scheme));
+    throw io::ObjError(mesh.name + text);
 }
 
 // Defaults, then the file's tags, then explicit flags.
@@ -41,6 +90,7 @@ Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     if (args.scheme) options.scheme = *args.scheme;
     if (args.boundary) options.boundary = *args.boundary;
     if (args.creaseMethod) options.creaseMethod = *args.creaseMethod;
+    if (args.memoryBudget) options.memoryBudgetBytes = *args.memoryBudget;
     return options;
 }
 
@@ -107,13 +157,19 @@ void printBase(const Topology& t, const Options& options) {
 }  // namespace
 
 int runRefine(const RefineArgs& args) {
+    std::string extension = std::filesystem::path(args.output).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (!extension.empty() && extension != ".obj")
+        throw io::ObjError(args.output + ": only OBJ output (.obj) is written, not " + extension);
     io::ObjMesh mesh = loadMesh(args.mesh);
-    Refiner refiner = makeRefiner(mesh, makeOptions(args.mesh, mesh));
-    refiner.refineUniform(args.level);
+    const Options options = makeOptions(args.mesh, mesh);
+    Refiner refiner = makeRefiner(mesh, options);
+    refineWithinBudget(refiner, mesh, args.level, TopologyDetail::FacesOnly);
     StencilTable table;
     if (args.level > 0) table = refiner.factorizedStencils(args.level);
     std::vector<float> positions =
         args.level > 0 ? evaluatePositions(args.evaluator, table, mesh.positions) : mesh.positions;
+    checkFinite(positions, mesh, args.level, options.scheme);
     const Topology& top = refiner.level(args.level);
     io::writeObj(args.output, positions.data(), top);
     std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,
@@ -128,7 +184,7 @@ int runInfo(const InfoArgs& args) {
     std::printf("%s\n", args.mesh.input.c_str());
     printBase(refiner.level(0), options);
 
-    refiner.refineUniform(args.level, TopologyDetail::Full);  // the table counts sharp edges of every level
+    refineWithinBudget(refiner, mesh, args.level, TopologyDetail::Full);  // the table counts sharp edges of every level
     std::printf("\n| level | vertices | faces | sharp edges | stencils | level table bytes | factorized table bytes |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int L = 0; L <= args.level; ++L) {
@@ -148,7 +204,9 @@ int runInfo(const InfoArgs& args) {
 int runDemo(const DemoArgs& args) {
     io::ObjMesh mesh = loadMesh(args.mesh);
     Options options = makeOptions(args.mesh, mesh);
-    std::filesystem::create_directories(args.outDir);
+    std::error_code ec;
+    std::filesystem::create_directories(args.outDir, ec);
+    if (ec) throw io::ObjError(args.outDir + ": cannot create the output folder (" + ec.message() + ")");
     const std::string stem = std::filesystem::path(args.mesh.input).stem().string();
 
     const std::unique_ptr<VulkanContext> vulkan = openVulkan();
@@ -157,7 +215,7 @@ int runDemo(const DemoArgs& args) {
     for (int L = 1; L <= args.levels; ++L) {
         auto start = std::chrono::steady_clock::now();
         Refiner refiner = makeRefiner(mesh, options);
-        refiner.refineUniform(L);
+        refineWithinBudget(refiner, mesh, L, TopologyDetail::FacesOnly);
         StencilTable table = refiner.factorizedStencils(L);
         double analyzerMs = msSince(start);
 
@@ -171,6 +229,7 @@ int runDemo(const DemoArgs& args) {
         }
         std::nth_element(evalMs.begin(), evalMs.begin() + 3, evalMs.end());
 
+        checkFinite(positions, mesh, L, options.scheme);
         const Topology& t = refiner.level(L);
         char vulkanMs[32] = "-";
         if (vulkan) std::snprintf(vulkanMs, sizeof vulkanMs, "%.3f", vulkanEvalMs(*vulkan, table, mesh.positions, 7));
