@@ -14,7 +14,7 @@ std::optional<std::size_t> parseByteSize(std::string_view text) {
     if (ec != std::errc() || unitStart == text.data()) return std::nullopt;  // also "-1" and "+1"
 
     std::string unit(unitStart, end);
-    if (!unit.empty() && unit[0] == ' ') unit.erase(0, 1);  // "8 GiB"
+    if (unit.size() > 1 && unit[0] == ' ') unit.erase(0, 1);  // "8 GiB"
     for (char& c : unit) c = char(std::tolower(static_cast<unsigned char>(c)));
     static const char* const prefixes = "kmgt";
     unsigned long long scale = 1;

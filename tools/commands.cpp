@@ -41,16 +41,28 @@ Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options) {
     }
 }
 
-// "4 GiB (4294967296 bytes)": the size in the largest binary unit that keeps it at least 1.
-std::string bytesText(std::size_t bytes) {
+// A size in the largest binary unit that keeps it at least 1: {value, "GiB"}.
+std::pair<double, const char*> binaryUnits(std::size_t bytes) {
     static const char* const units[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
     double value = double(bytes);
     int unit = 0;
     while (value >= 1024 && unit < 6) value /= 1024, ++unit;
-    if (unit == 0) return std::to_string(bytes) + " bytes";
+    return {value, units[unit]};
+}
+
+// "4 GiB (4294967296 bytes)".
+std::string bytesText(std::size_t bytes) {
+    const auto [value, unit] = binaryUnits(bytes);
+    if (bytes < 1024) return std::to_string(bytes) + " bytes";
     char text[96];
-    std::snprintf(text, sizeof text, "%.3g %s (%zu bytes)", value, units[unit], bytes);
+    std::snprintf(text, sizeof text, "%.3g %s (%zu bytes)", value, unit, bytes);
     return text;
+}
+
+// A --memory-budget value just above `bytes`, e.g. "3MiB" for 2.18 MiB.
+std::string budgetAbove(std::size_t bytes) {
+    const auto [value, unit] = binaryUnits(bytes);
+    return bytes < 1024 ? std::to_string(bytes + 1) : std::to_string((long long)std::floor(value) + 1) + unit;
 }
 
 // refineUniform with a refusal by the memory budget told in the flag's terms.
@@ -64,8 +76,8 @@ void refineWithinBudget(Refiner& refiner, const io::ObjMesh& mesh, int level, To
         if (estimate <= budget) throw;
         throw io::ObjError(mesh.name + ": level " + std::to_string(refused) + " needs an estimated " +
                            bytesText(estimate) + " for its tables and output, over the memory budget of " +
-                           bytesText(budget) + "; raise --memory-budget (e.g. --memory-budget " +
-                           std::to_string((estimate >> 30) + 1) + "GiB) or ask for fewer levels");
+                           bytesText(budget) + "; raise --memory-budget (e.g. --memory-budget " + budgetAbove(estimate) +
+                           ") or ask for fewer levels");
     }
 }
 

@@ -405,9 +405,11 @@ void writeReplacing(const std::string& path, const std::function<void(std::ostre
     const std::string failed = path + ": cannot write file";
     std::error_code ec;
     fs::path target = fs::path(path);
-    if (fs::is_symlink(target, ec)) target = fs::canonical(target, ec);  // replace what the link names
-    if (ec) throw ObjError(failed + reason(ec.value()));
-    const fs::file_status status = fs::status(target, ec);
+    if (fs::is_symlink(fs::symlink_status(target, ec))) {  // replace what the link names, not the link
+        target = fs::canonical(target, ec);
+        if (ec) throw ObjError(failed + reason(ec.value()));
+    }
+    const fs::file_status status = fs::status(target, ec);  // file_type::not_found if there is none
     if (fs::is_directory(status)) throw ObjError(failed + " (it is a directory)");
     if (fs::exists(status) && !fs::is_regular_file(status)) {  // a device or a pipe: nothing to replace
         std::ofstream out(target, std::ios::binary);
