@@ -260,12 +260,33 @@ TEST(ObjIo, TagErrors) {
     expectError(q + "t crease 2147483648/1/0 0 1 1\n", 5, "cannot parse tag count '2147483648'");
 }
 
+// A scratch folder for the file tests, removed afterwards.
+struct ScratchDir {
+    std::filesystem::path path;
+    explicit ScratchDir(const std::string& name) : path(std::filesystem::temp_directory_path() / name) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~ScratchDir() { std::filesystem::remove_all(path); }
+    std::string file(const std::string& name) const { return (path / name).string(); }
+    int entries() const {
+        return int(std::distance(std::filesystem::directory_iterator(path), std::filesystem::directory_iterator()));
+    }
+};
+
 TEST(ObjIo, MissingFile) {
     try {
         readObj("/nonexistent/dir/mesh.obj");
         FAIL() << "no error";
     } catch (const ObjError& e) {
-        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/mesh.obj: cannot open file");
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/mesh.obj: cannot open file (No such file or directory)");
+    }
+    ScratchDir dir("quadtri_test_read_folder");
+    try {
+        readObj(dir.path.string());
+        FAIL() << "no error";
+    } catch (const ObjError& e) {
+        EXPECT_EQ(std::string(e.what()), dir.path.string() + ": is a folder, not an OBJ file");
     }
 }
 
@@ -310,20 +331,6 @@ TEST(ObjIo, WriteToUnwritablePath) {
         EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/out.obj: cannot write file (No such file or directory)");
     }
 }
-
-// A scratch folder for the file tests, removed afterwards.
-struct ScratchDir {
-    std::filesystem::path path;
-    explicit ScratchDir(const std::string& name) : path(std::filesystem::temp_directory_path() / name) {
-        std::filesystem::remove_all(path);
-        std::filesystem::create_directories(path);
-    }
-    ~ScratchDir() { std::filesystem::remove_all(path); }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-    int entries() const {
-        return int(std::distance(std::filesystem::directory_iterator(path), std::filesystem::directory_iterator()));
-    }
-};
 
 std::string contents(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -169,6 +169,7 @@ void printBase(const Topology& t, const Options& options) {
 }  // namespace
 
 int runRefine(const RefineArgs& args) {
+    if (args.output.empty()) throw io::ObjError("-o: the output file name is empty");
     std::string extension = std::filesystem::path(args.output).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     if (!extension.empty() && extension != ".obj")
@@ -214,6 +215,7 @@ int runInfo(const InfoArgs& args) {
 }
 
 int runDemo(const DemoArgs& args) {
+    if (args.outDir.empty()) throw io::ObjError("--out-dir: the folder name is empty");
     io::ObjMesh mesh = loadMesh(args.mesh);
     Options options = makeOptions(args.mesh, mesh);
     std::error_code ec;

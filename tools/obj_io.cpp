@@ -18,6 +18,9 @@ namespace quadtri::io {
 
 namespace {
 
+// " (No such file or directory)" for an errno value; "" for 0.
+std::string reason(int error) { return error ? std::string(" (") + std::strerror(error) + ")" : std::string(); }
+
 // Parses one OBJ stream; `fail` and `warn` prefix messages with "name:line: ".
 class Parser {
 public:
@@ -349,8 +352,11 @@ std::string ObjMesh::describe(const TopologyDiagnostic& diagnostic) const {
 ObjMesh parseObj(std::istream& in, const std::string& name) { return Parser(in, name).run(); }
 
 ObjMesh readObj(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw ObjError(path + ": is a folder, not an OBJ file");
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw ObjError(path + ": cannot open file");
+    if (!in) throw ObjError(path + ": cannot open file" + reason(errno));
     return parseObj(in, path);
 }
 
@@ -370,8 +376,6 @@ void writeObj(std::ostream& out, const float* positions, const Topology& topolog
 }
 
 namespace {
-
-std::string reason(int error) { return error ? std::string(" (") + std::strerror(error) + ")" : std::string(); }
 
 // A fresh file beside `target`, created exclusively so that no other file is truncated.
 std::string createTemporary(const std::filesystem::path& target) {
