@@ -188,6 +188,13 @@ TEST(ObjIo, UnknownStatementsWarnOncePerKeyword) {
     EXPECT_EQ(m.warnings[0], "w.obj:5: unknown statement 'l' ignored, 3 lines in all");
     EXPECT_EQ(m.warnings[1], "w.obj:8: unknown statement 'curv' ignored");
     EXPECT_EQ(m.warnings[2], "w.obj:10: unknown tag 'foo' ignored, 2 lines in all");
+    // Many keywords: the first few, then a count.
+    std::string many = "v 0 0 0\n";
+    for (int k = 0; k < 1000; ++k) many += "x" + std::to_string(k) + "\n";
+    ObjMesh n = parse(many, "n.obj");
+    ASSERT_EQ(n.warnings.size(), 9u);
+    EXPECT_EQ(n.warnings[0], "n.obj:2: unknown statement 'x0' ignored");
+    EXPECT_EQ(n.warnings[8], "n.obj: 992 more unknown keywords ignored");
 }
 
 TEST(ObjIo, DescribeUsesTheFileNumbering) {

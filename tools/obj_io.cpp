@@ -13,6 +13,7 @@
 #include <istream>
 #include <ostream>
 #include <string_view>
+#include <unordered_map>
 
 namespace quadtri::io {
 
@@ -21,7 +22,7 @@ namespace {
 // " (No such file or directory)" for an errno value; "" for 0.
 std::string reason(int error) { return error ? std::string(" (") + std::strerror(error) + ")" : std::string(); }
 
-// Parses one OBJ stream; `fail` and `warn` prefix messages with "name:line: ".
+// Parses one OBJ stream; `fail` prefixes messages with "name:line: ".
 class Parser {
 public:
     Parser(std::istream& in, const std::string& name) : in_(in), name_(name) { mesh_.name = name; }
@@ -61,6 +62,7 @@ private:
     bool sawContent_ = false;  // a line with a statement was seen (for the format sniffing)
     bool sawObjStatement_ = false;
     std::vector<Unknown> unknown_;  // in order of first appearance
+    std::unordered_map<std::string, size_t> unknownIndex_;  // Unknown::what -> its place in unknown_
     ObjMesh mesh_;
 
     std::string where(int line) const { return name_ + ":" + std::to_string(line) + ": "; }
@@ -97,22 +99,28 @@ private:
     }
 
     void noteUnknown(std::string what) {
-        for (Unknown& u : unknown_)
-            if (u.what == what) {
-                ++u.count;
-                return;
-            }
-        unknown_.push_back({std::move(what), line_, 1});
+        const auto [it, isNew] = unknownIndex_.emplace(what, unknown_.size());
+        if (isNew)
+            unknown_.push_back({std::move(what), line_, 1});
+        else
+            ++unknown_[it->second].count;
     }
 
-    // One warning per unknown keyword; a file of nothing else is not OBJ at all.
+    // One warning per unknown keyword, for the first few keywords; a file of nothing else is not
+    // OBJ at all.
     void reportUnknown() {
+        constexpr size_t kMaxWarnings = 8;
         if (!sawObjStatement_ && !unknown_.empty())
             throw ObjError(where(unknown_[0].firstLine) + "not an OBJ file (no line is an OBJ statement; " +
                            unknown_[0].what + " is not one)");
-        for (const Unknown& u : unknown_)
+        for (size_t i = 0; i < unknown_.size() && i < kMaxWarnings; ++i) {
+            const Unknown& u = unknown_[i];
             mesh_.warnings.push_back(where(u.firstLine) + "unknown " + u.what + " ignored" +
                                      (u.count > 1 ? ", " + std::to_string(u.count) + " lines in all" : ""));
+        }
+        if (unknown_.size() > kMaxWarnings)
+            mesh_.warnings.push_back(name_ + ": " + std::to_string(unknown_.size() - kMaxWarnings) +
+                                     " more unknown keywords ignored");
     }
 
     static std::vector<std::string_view> split(std::string_view s) {
