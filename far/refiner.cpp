@@ -84,11 +84,6 @@ std::size_t Refiner::bytes() const {
 
 namespace {
 
-std::string budgetText(std::size_t budget, std::size_t held) {
-    return "the budget of " + std::to_string(budget) + " bytes (Options::memoryBudgetBytes; the Refiner holds " +
-           std::to_string(held) + ")";
-}
-
 // Bytes of a float table converted to a double one (toDoubleTable).
 std::size_t doubleBytes(const StencilTable& t) {
     return std::size_t(2 * t.numStencils()) * sizeof(int) + t.numEntries() * (sizeof(int) + sizeof(double));
@@ -110,9 +105,7 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
         completeLevel(L - 1);  // within the budget level L - 1 was built under
         const std::size_t estimate = estimateLevelBytes(L), held = bytes();
         if (held > options_.memoryBudgetBytes || estimate > options_.memoryBudgetBytes - held)
-            throw TopologyError("level " + std::to_string(L) + " needs an estimated " + std::to_string(estimate) +
-                                " bytes of topology, tables and output, over " +
-                                budgetText(options_.memoryBudgetBytes, held));
+            throw MemoryBudgetError("level " + std::to_string(L), held + estimate, held, options_.memoryBudgetBytes);
         const Topology& parent = levels_.back();
         const ChildNumbering numbering = numberChildren(parent);
         const TopologyDetail detail = L == maxLevel ? lastLevel : TopologyDetail::Full;
@@ -134,12 +127,11 @@ StencilTable Refiner::factorizedStencils(int L) const {
                             std::to_string(maxLevel()));
     const std::size_t budget = options_.memoryBudgetBytes, held = bytes();
     std::size_t used = 0;  // bytes of the double tables alive at this point
-    auto refuse = [&] {
-        return TopologyError("the factorized stencils of level " + std::to_string(L) + " need more than " +
-                             budgetText(budget, held));
+    auto refuse = [&](std::size_t needed) {
+        return MemoryBudgetError("the factorized stencils of level " + std::to_string(L), needed, held, budget);
     };
     auto reserve = [&](std::size_t more) {
-        if (held > budget || used > budget - held || more > budget - held - used) throw refuse();
+        if (held > budget || used > budget - held || more > budget - held - used) throw refuse(held + used + more);
         used += more;
     };
     reserve(doubleBytes(levelTables_[0]));
@@ -153,7 +145,7 @@ StencilTable Refiner::factorizedStencils(int L) const {
             used += bytesOf(next) - bytesOf(composed);
             composed = std::move(next);
         } catch (const std::length_error&) {
-            throw refuse();
+            throw refuse(budget + 1);  // composition stopped at the budget: more, by how much is unknown
         }
     }
     // The float table (an index per entry, two ints per stencil, a weight pool of at most one

@@ -43,6 +43,12 @@ std::string TopologyDiagnostic::message() const {
     return text + problem;
 }
 
+MemoryBudgetError::MemoryBudgetError(std::string subject, std::size_t needed, std::size_t held, std::size_t budget)
+    : TopologyError(subject + " needs at least " + std::to_string(needed) + " bytes with the " + std::to_string(held) +
+                    " the Refiner holds, over the budget of " + std::to_string(budget) +
+                    " bytes (Options::memoryBudgetBytes)"),
+      subject_(std::move(subject)), needed_(needed), held_(held), budget_(budget) {}
+
 std::size_t bytesOf(const Topology& t) {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(t.faceOffsets) + bytes(t.faceVerts) + bytes(t.faceEdges) + bytes(t.faceHole) + bytes(t.edgeVerts) +
@@ -257,9 +263,7 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     std::size_t corners = 0;
     for (int f = 0; f < desc.numFaces; ++f) corners += std::size_t(desc.numVertsPerFace[f]);
     const std::size_t estimate = std::size_t(desc.numVertices) * 32 + corners * 64 + std::size_t(desc.numFaces) * 16;
-    if (estimate > options.memoryBudgetBytes)
-        throw TopologyError("level 0 needs an estimated " + std::to_string(estimate) + " bytes, over the budget of " +
-                            std::to_string(options.memoryBudgetBytes) + " bytes (Options::memoryBudgetBytes)");
+    if (estimate > options.memoryBudgetBytes) throw MemoryBudgetError("level 0", estimate, 0, options.memoryBudgetBytes);
     Topology t;
     t.numVertices = desc.numVertices;
     // Faces become the simple loops they walk around (face_loops.h); firstFace maps each face of

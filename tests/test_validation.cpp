@@ -392,12 +392,16 @@ TEST(Validation, MemoryBudget) {
     std::string message;
     try {
         refiner->refineUniform(1);
-    } catch (const TopologyError& e) {
+    } catch (const MemoryBudgetError& e) {
         message = e.what();
+        EXPECT_EQ(e.needed(), refiner->bytes() + estimate);
+        EXPECT_EQ(e.held(), refiner->bytes());
+        EXPECT_EQ(e.budget(), 3000u);
+        EXPECT_EQ(e.subject(), "level 1");
     }
     ASSERT_FALSE(message.empty()) << "a 3000-byte budget was accepted for an estimate of " << estimate;
     EXPECT_NE(message.find("bytes"), std::string::npos) << message;
-    EXPECT_NE(message.find(std::to_string(estimate)), std::string::npos) << message;
+    EXPECT_NE(message.find(std::to_string(refiner->bytes() + estimate)), std::string::npos) << message;
     EXPECT_NE(message.find("level 1"), std::string::npos) << message;
     EXPECT_EQ(refiner->maxLevel(), 0) << "refused before building anything";
 
