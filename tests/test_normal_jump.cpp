@@ -2,8 +2,8 @@
 // smooth edge of a smooth limit surface the jump shrinks by about half per level (at a crease
 // corner by the corner's inner eigenvalue over the crease tangents' ½), so growth means that
 // some sector collapses onto one direction: the surface folds back. Across a sharp edge the jump
-// converges to the crease's own dihedral angle, from below as often as from above, so sharp edges
-// are not measured; a fold next to a crease shows up in the smooth edges beside it.
+// converges to the crease's own dihedral angle and may rise towards it, so sharp edges are held
+// to a weaker bound: the rise must shrink from level to level (a fold's rise grows).
 #include <gtest/gtest.h>
 
 #include <algorithm>
