@@ -17,7 +17,7 @@
 namespace quadtri {
 namespace {
 
-constexpr int kLevels = 3;
+constexpr int kLevels = 4;
 constexpr int kThreadsPerJob = 3;
 
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
