@@ -21,11 +21,24 @@ int closedFanValence(const Topology& t, int v) {
     return t.vertexEdgeCount(v);
 }
 
+// Whether an interior end of this valence takes Zorin's rule. His weights hold for K >= 3 only:
+// at K = 2 (two triangles back to back, the only closed fan below 3) the cos 4πj/K terms stop
+// cancelling and the mask would sum to 1.5. Such an end is refined as a regular one, by the
+// plain Butterfly, whose weights sum to 1 whatever its wings are.
+bool takesZorinRule(int valence) { return valence >= 3 && valence != 6; }
+
 }  // namespace
 
 CatmarkButterflyMasks::CatmarkButterflyMasks(const Topology& topology, SparseAccumulator& accumulator)
-    : t_(topology), acc_(accumulator), kind_(size_t(topology.numVertices)) {
+    : t_(topology), acc_(accumulator), kind_(size_t(topology.numVertices)), sharpEdges_(size_t(topology.numVertices)) {
     for (int v = 0; v < t_.numVertices; ++v) kind_[size_t(v)] = classify(v);
+    for (int e = 0; e < t_.numEdges(); ++e) {
+        if (!isSharp(t_.edgeSharpness[e])) continue;
+        for (int end = 0; end < 2; ++end) {
+            uint8_t& count = sharpEdges_[size_t(t_.edgeVerts[2 * e + end])];
+            count = count < 3 ? count + 1 : 3;
+        }
+    }
 }
 
 CatmarkButterflyMasks::Kind CatmarkButterflyMasks::classify(int v) const {
@@ -128,13 +141,13 @@ void CatmarkButterflyMasks::butterflyEdge(int e, double scale) {
     const int a = t_.edgeVerts[2 * e], b = t_.edgeVerts[2 * e + 1];
     const int f0 = t_.edgeFaces[t_.edgeFaceOffsets[e]], f1 = t_.edgeFaces[t_.edgeFaceOffsets[e] + 1];
     if (interpolated(a) && interpolated(b)) {
-        const int ka = closedFanValence(t_, a), kb = closedFanValence(t_, b);
-        const bool extraordinaryA = ka != 0 && ka != 6, extraordinaryB = kb != 0 && kb != 6;
+        const bool extraordinaryA = takesZorinRule(closedFanValence(t_, a));
+        const bool extraordinaryB = takesZorinRule(closedFanValence(t_, b));
         if (extraordinaryA && extraordinaryB) {
-            zorinEdge(a, b, 0.5 * scale);
-            zorinEdge(b, a, 0.5 * scale);
+            zorinEdge(a, e, 0.5 * scale);
+            zorinEdge(b, e, 0.5 * scale);
         } else if (extraordinaryA || extraordinaryB) {
-            zorinEdge(extraordinaryA ? a : b, extraordinaryA ? b : a, scale);
+            zorinEdge(extraordinaryA ? a : b, e, scale);
         } else if (seamWeightOfSide(f0, a, b) == 0.0 && seamWeightOfSide(f1, a, b) == 0.0) {
             butterfly(a, b, f0, f1, scale);
         } else if (cleanSide(f1, a, b)) {
@@ -148,7 +161,7 @@ void CatmarkButterflyMasks::butterflyEdge(int e, double scale) {
     }
     const int s = interpolated(a) ? b : a;
     if (interpolated(a) != interpolated(b) && kind_[s] == Kind::RegularSeam) {
-        const bool seam0 = t_.edgeFlags[findEdge(t_, s, thirdVertex(f0, a, b))] & kEdgeSeam;
+        const bool seam0 = t_.edgeFlags[edgeOfFace(f0, s, thirdVertex(f0, a, b))] & kEdgeSeam;
         return seamDiagonal(s, s == a ? b : a, seam0 ? f0 : f1, seam0 ? f1 : f0, scale);
     }
     butterfly(a, b, f0, f1, scale);
@@ -188,27 +201,58 @@ void CatmarkButterflyMasks::seamDiagonal(int s, int t, int towardsSeam, int away
     addWing(away, t, d, s, -scale / 20.0);
 }
 
-// Zorin's modified Butterfly seen from `centre`, the ring starting at `other`: ¾ at the centre,
-// K = 3: (5/12, −1/12, −1/12), K = 4: (3/8, 0, −1/8, 0), else (¼ + cos 2πj/K + ½ cos 4πj/K)/K.
-void CatmarkButterflyMasks::zorinEdge(int centre, int other, double scale) {
-    const int valence = t_.vertexEdgeCount(centre);
-    ring_.assign(1, other);
-    int face = t_.edgeFaces[t_.edgeFaceOffsets[findEdge(t_, centre, other)]];
-    while (int(ring_.size()) < valence && face >= 0) {
-        ring_.push_back(thirdVertex(face, centre, ring_.back()));
-        face = otherFace(findEdge(t_, centre, ring_.back()), face);
+// Zorin's modified Butterfly seen from `centre` along edge e, the ring starting at e's other end:
+// ¾ at the centre, K = 3: (5/12, −1/12, −1/12), K = 4: (3/8, 0, −1/8, 0), else
+// (¼ + cos 2πj/K + ½ cos 4πj/K)/K. A mask costs its K + 1 entries: the weights are computed once
+// per valence, and a ring longer than a few steps is walked once per centre (a vertex's edges
+// mostly come one after another; short rings, walked per edge, do not evict it).
+void CatmarkButterflyMasks::zorinEdge(int centre, int e, double scale) {
+    const int other = t_.otherVertex(e, centre), firstFace = t_.edgeFaces[t_.edgeFaceOffsets[e]];
+    const int k = t_.vertexEdgeCount(centre);
+    std::vector<int>* ring = &shortRing_;
+    if (k > kShortRing) {
+        ring = &longRing_;
+        if (longRingCentre_ != centre) walkRing(centre, other, firstFace, longRing_);
+        longRingCentre_ = centre;
+    } else {
+        walkRing(centre, other, firstFace, shortRing_);
     }
+    const std::vector<double>& weights = zorinWeights(int(ring->size()));
+    // The ring is read from `other` on, first into e's first face: the order (and so every bit
+    // of the table) does not depend on which edge the ring was walked from.
+    const int n = int(ring->size());
+    int start = 0;
+    while ((*ring)[size_t(start)] != other) ++start;
+    const int step = (*ring)[size_t((start + 1) % n)] == thirdVertex(firstFace, centre, other) ? 1 : n - 1;
     acc_.add(centre, 0.75 * scale);
-    const int k = int(ring_.size());
-    for (int j = 0; j < k; ++j) {
-        double s;
-        if (k == 3)
-            s = j == 0 ? 5.0 / 12.0 : -1.0 / 12.0;
-        else if (k == 4)
-            s = j == 0 ? 0.375 : j == 2 ? -0.125 : 0.0;
-        else
-            s = (0.25 + std::cos(2.0 * M_PI * j / k) + 0.5 * std::cos(4.0 * M_PI * j / k)) / k;
-        acc_.add(ring_[size_t(j)], s * scale);
+    for (int j = 0, i = start; j < n; ++j, i = (i + step) % n) acc_.add((*ring)[size_t(i)], weights[size_t(j)] * scale);
+}
+
+const std::vector<double>& CatmarkButterflyMasks::zorinWeights(int k) {
+    if (int(weightsByValence_.size()) <= k) weightsByValence_.resize(size_t(k) + 1);
+    std::vector<double>& weights = weightsByValence_[size_t(k)];
+    if (weights.empty()) {
+        weights.resize(size_t(k));
+        for (int j = 0; j < k; ++j) {
+            if (k == 3)
+                weights[size_t(j)] = j == 0 ? 5.0 / 12.0 : -1.0 / 12.0;
+            else if (k == 4)
+                weights[size_t(j)] = j == 0 ? 0.375 : j == 2 ? -0.125 : 0.0;
+            else
+                weights[size_t(j)] = (0.25 + std::cos(2.0 * M_PI * j / k) + 0.5 * std::cos(4.0 * M_PI * j / k)) / k;
+        }
+    }
+    return weights;
+}
+
+// The centre's neighbours in fan order from `other`, through `face` first: each step crosses the
+// face's other edge at the centre, found among the face's corners.
+void CatmarkButterflyMasks::walkRing(int centre, int other, int face, std::vector<int>& ring) const {
+    const int valence = t_.vertexEdgeCount(centre);
+    ring.assign(1, other);
+    while (int(ring.size()) < valence && face >= 0) {
+        ring.push_back(thirdVertex(face, centre, ring.back()));
+        face = otherFace(edgeOfFace(face, centre, ring.back()), face);
     }
 }
 
@@ -224,8 +268,17 @@ int CatmarkButterflyMasks::otherFace(int e, int f) const {
     return first == f ? t_.edgeFaces[t_.edgeFaceOffsets[e] + 1] : first;
 }
 
+int CatmarkButterflyMasks::edgeOfFace(int f, int x, int y) const {
+    const int b = t_.faceOffsets[f], n = t_.faceSize(f);
+    for (int i = 0; i < n; ++i) {
+        const int u = t_.faceVerts[b + i], w = t_.faceVerts[b + (i + 1 == n ? 0 : i + 1)];
+        if ((u == x && w == y) || (u == y && w == x)) return t_.faceEdges[b + i];
+    }
+    return -1;
+}
+
 int CatmarkButterflyMasks::wing(int f, int x, int y) const {
-    const int g = otherFace(findEdge(t_, x, y), f);
+    const int g = otherFace(edgeOfFace(f, x, y), f);
     return g >= 0 && t_.faceSize(g) == 3 ? thirdVertex(g, x, y) : -1;
 }
 

@@ -51,13 +51,18 @@ private:
     void butterfly(int a, int b, int f0, int f1, double scale);
     void halfButterfly(int a, int b, int f, double scale);
     void seamDiagonal(int s, int t, int towardsSeam, int away, double scale);
-    void zorinEdge(int centre, int other, double scale);
+    void zorinEdge(int centre, int edge, double scale);
+    void walkRing(int centre, int other, int face, std::vector<int>& ring) const;
+    const std::vector<double>& zorinWeights(int valence);
 
     // Curve rules (butterfly_curve.cpp).
     void creaseVertex(int v, const float* edgeSharpness, double scale);
     int curveContinuation(int vertex, int previous) const;
 
     int thirdVertex(int triangle, int a, int b) const;
+    // The edge of `face` joining its corners x and y, or -1: O(face size), where findEdge would
+    // scan a vertex's edges (thousands at a pole).
+    int edgeOfFace(int face, int x, int y) const;
     int otherFace(int edge, int face) const;
     // Vertex across edge (x, y) from `triangle`, or -1 when that face is missing or no triangle.
     int wing(int triangle, int x, int y) const;
@@ -71,7 +76,15 @@ private:
     const Topology& t_;
     SparseAccumulator& acc_;
     std::vector<Kind> kind_;
-    std::vector<int> ring_;  // scratch: a vertex's neighbours in fan order (Zorin's rule)
+    std::vector<uint8_t> sharpEdges_;  // per vertex: its sharp edges, counted up to 3
+    // Zorin's rule: a centre's neighbours in fan order (a long ring kept for the next edge of
+    // its centre) and the weights per valence, computed at its first use (their total size is at
+    // most the level's edge ends: each valence seen is a vertex's edge count).
+    static constexpr int kShortRing = 16;
+    std::vector<int> shortRing_;
+    int longRingCentre_ = -1;
+    std::vector<int> longRing_;
+    std::vector<std::vector<double>> weightsByValence_;
 };
 
 }  // namespace quadtri

@@ -59,15 +59,15 @@ void addCurveMask(const CurvePoint* points, int count, double target, bool appro
 }  // namespace
 
 int CatmarkButterflyMasks::curveContinuation(int v, int previous) const {
-    if (isSharp(t_.vertSharpness[v])) return -1;  // a corner ends the curve
-    int next = -1, sharpEdges = 0;
+    // A corner ends the curve; so does a vertex on more than two sharp edges, found without
+    // scanning its edges (a pole on many creases would cost its valence per sharp edge).
+    if (isSharp(t_.vertSharpness[v]) || sharpEdges_[size_t(v)] != 2) return -1;
+    int next = -1;
     for (int i = t_.vertEdgeOffsets[v]; i < t_.vertEdgeOffsets[v + 1]; ++i) {
         const int e = t_.vertEdges[i];
-        if (!isSharp(t_.edgeSharpness[e])) continue;
-        ++sharpEdges;
-        if (t_.otherVertex(e, v) != previous) next = t_.otherVertex(e, v);
+        if (isSharp(t_.edgeSharpness[e]) && t_.otherVertex(e, v) != previous) next = t_.otherVertex(e, v);
     }
-    return sharpEdges == 2 ? next : -1;
+    return next;
 }
 
 // The edge point lies on the triangle side (its faces are triangles), so it is interpolated:

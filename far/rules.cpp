@@ -144,13 +144,6 @@ int countSharp(const float* s, int n) {
     return k;
 }
 
-// Child sharpness of edge e at its end v, from the per-vertex child sharpness table.
-float childSharpnessAt(const Topology& t, const std::vector<float>& childEdgeSharpness, int v, int e) {
-    for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i)
-        if (t.vertEdges[i] == e) return childEdgeSharpness[i];
-    return 0.0f;
-}
-
 // What every worker of a level reads.
 struct LevelInputs {
     const Topology& t;
@@ -158,6 +151,7 @@ struct LevelInputs {
     const Options& options;
     std::vector<int> faceOfPoint;           // parent face of each face point
     std::vector<float> childEdgeSharpness;  // per (vertex, incident edge), parallel to t.vertEdges
+    std::vector<float> childSharpnessAtEnds;  // the same per edge: 2e at edgeVerts[2e], 2e + 1 at the other end
     bool smooth;  // no sharp edge or vertex in the level (closed, uncreased): no crease rule applies
     std::optional<UnzippedLevel> unzipped;  // Schaefer-Warren's copies, built once per level
 };
@@ -189,8 +183,7 @@ void edgeMask(const LevelInputs& in, Worker& w, int e) {
     if (!sharp && isSharp(s)) {
         sharp = in.options.creaseMethod == CreaseMethod::Uniform
                     ? s >= 1.0f
-                    : childSharpnessAt(t, in.childEdgeSharpness, t.edgeVerts[2 * e], e) > 0.0f &&
-                          childSharpnessAt(t, in.childEdgeSharpness, t.edgeVerts[2 * e + 1], e) > 0.0f;
+                    : in.childSharpnessAtEnds[2 * e] > 0.0f && in.childSharpnessAtEnds[2 * e + 1] > 0.0f;
     }
     if (sharp) {
         w.level.edgeSharp(e, 1.0);
@@ -280,14 +273,21 @@ template <typename Table>
 Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options) {
     const int numChildren = num.numFacePoints + t.numEdges() + t.numVertices;
     const bool smooth = options.scheme != Scheme::Bilinear && !hasSharpness(t);
-    LevelInputs in{t, num, options, std::vector<int>(num.numFacePoints), {}, smooth, std::nullopt};
+    LevelInputs in{t, num, options, std::vector<int>(num.numFacePoints), {}, {}, smooth, std::nullopt};
     if (options.scheme == Scheme::SchaeferWarren) in.unzipped.emplace(t);
     for (int f = 0; f < t.numFaces(); ++f)
         if (num.facePoint[f] >= 0) in.faceOfPoint[num.facePoint[f]] = f;
     if (!smooth) {
         in.childEdgeSharpness.resize(t.vertEdges.size());
-        for (int v = 0; v < t.numVertices; ++v)
+        const bool chaikin = options.creaseMethod == CreaseMethod::Chaikin;  // edge points read both ends
+        if (chaikin) in.childSharpnessAtEnds.resize(t.edgeVerts.size());
+        for (int v = 0; v < t.numVertices; ++v) {
             childEdgeSharpnessAtVertex(t, v, options.creaseMethod, in.childEdgeSharpness.data() + t.vertEdgeOffsets[v]);
+            for (int i = t.vertEdgeOffsets[v]; chaikin && i < t.vertEdgeOffsets[v + 1]; ++i) {
+                const int e = t.vertEdges[i];
+                in.childSharpnessAtEnds[2 * e + (t.edgeVerts[2 * e] == v ? 0 : 1)] = in.childEdgeSharpness[i];
+            }
+        }
     }
 
     // Reserve an upper bound of the entries: untouched reserved pages cost nothing, while

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 namespace quadtri {
 
@@ -76,7 +77,8 @@ void countsToOffsets(std::vector<int>& offsets) {
 }
 
 // Edges keyed by their lower vertex: corners are bucketed by min(a, b) with a counting sort,
-// and each bucket (a vertex's few edges) is searched linearly. No hashing, no maps.
+// and within a bucket each upper vertex remembers its edge (a pole's bucket holds thousands, so
+// no linear search there). No hashing, no maps.
 void buildEdges(Topology& t) {
     const int nv = t.numVertices;
     const int nc = t.numFaceVertices();
@@ -96,14 +98,15 @@ void buildEdges(Topology& t) {
     t.faceEdges.assign(nc, -1);
     t.edgeVerts.clear();
     t.edgeVerts.reserve(nc);  // about nc/2 edges for closed meshes, nc for open ones
+    std::vector<int> edgeToHi(nv, -1);  // edge (lo, hi) of the current bucket lo, or one of an earlier bucket
     for (int lo = 0; lo < nv; ++lo) {
         const int firstEdge = t.numEdges();
         for (int k = bucketOffsets[lo]; k < bucketOffsets[lo + 1]; ++k) {
             const int c = bucket[k];
             const int hi = std::max(t.faceVerts[c], cornerNext[c]);
-            int e = firstEdge;
-            while (e < t.numEdges() && t.edgeVerts[2 * e + 1] != hi) ++e;
-            if (e == t.numEdges()) {
+            int& e = edgeToHi[hi];
+            if (e < firstEdge) {
+                e = t.numEdges();
                 t.edgeVerts.push_back(lo);
                 t.edgeVerts.push_back(hi);
             }
@@ -236,6 +239,7 @@ void completeTopology(Topology& t) {
 }
 
 int findEdge(const Topology& t, int a, int b) {
+    if (t.vertexEdgeCount(a) > t.vertexEdgeCount(b)) std::swap(a, b);  // scan the shorter list
     for (int i = t.vertEdgeOffsets[a]; i < t.vertEdgeOffsets[a + 1]; ++i)
         if (t.otherVertex(t.vertEdges[i], a) == b) return t.vertEdges[i];
     return -1;

@@ -324,6 +324,31 @@ TEST(ButterflyZorin, BothEndsExtraordinaryAverage) {
     for (int v = 0; v < 6; ++v) EXPECT_NEAR(w.count(v) ? w.at(v) : 0.0, expected[v], 1e-12) << "vertex " << v;
 }
 
+// Valence 2 (OBJ `f 1 2 3` / `f 1 3 2`): Zorin's weights hold for K >= 3 only (his K >= 5 form
+// sums to 1.5 at K = 2), so the plain Butterfly applies, its wings being the edge's own ends:
+// ½ + 2(−1/16) = 3/8 at each end, 2 · ⅛ at the opposite vertex. Every vertex stays put.
+TEST(ButterflyZorin, ValenceTwoTakesThePlainButterfly) {
+    const std::vector<float> xyz = {0, 0, 0, 1, 0, 0.2f, 0.3f, 1, -0.4f};
+    const std::vector<int> verts = {0, 1, 2, 0, 2, 1}, sizes = {3, 3};
+    TopologyDescriptor d;
+    d.numVertices = 3;
+    d.numFaces = 2;
+    d.numVertsPerFace = sizes.data();
+    d.faceVertIndices = verts.data();
+    const Chain c = refineChain(d, xyz, butterflyOptions(), 2);
+    for (int e = 0; e < 3; ++e) {
+        const int a = c.levels[0].edgeVerts[2 * e], b = c.levels[0].edgeVerts[2 * e + 1], opposite = 3 - a - b;
+        std::map<int, double> w = row(c.tables[0], c.numbering[0].edgePoint(e));
+        EXPECT_NEAR(w[a], 3.0 / 8, 1e-15) << "edge " << e;
+        EXPECT_NEAR(w[b], 3.0 / 8, 1e-15) << "edge " << e;
+        EXPECT_NEAR(w[opposite], 1.0 / 4, 1e-15) << "edge " << e;
+        EXPECT_EQ(w.size(), 3u) << "edge " << e;
+    }
+    for (int L = 1; L <= 2; ++L)
+        for (int i = 0; i < int(c.tables[size_t(L - 1)].sizes.size()); ++i)
+            EXPECT_NEAR(rowSum(c.tables[size_t(L - 1)], i), 1.0, 1e-12) << "level " << L << " stencil " << i;
+}
+
 // ---------------------------------------------------------------------------------------------
 // 2. The regular seam of split_plane: quads on Z² for x <= 0, triangles on (k, j + k/2).
 
