@@ -20,11 +20,6 @@ constexpr std::size_t kFuzzBudgetBytes = std::size_t(64) << 20;
 // An error is clear when it says something.
 void expectMessage(const std::exception& error);
 
-// Bugs already reported and being fixed, which the targets skip so that fuzzing finds others:
-// the reason `refiner` (level 0 built) would hit one when refined, or nullptr. Each case goes
-// with its fix.
-const char* knownBug(const Refiner& refiner);
-
 // Checks levels 1..maxLevel() of `refiner` (built from finite `control` positions, 3 floats per
 // control vertex): every table well-formed and a partition of unity; the per-level and factorized
 // evaluations equal bitwise between CpuEvaluator and TbbEvaluator, finite wherever their magnitude
