@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# quadtri's two commands:
+# quadtri's commands:
 #   ./run.sh demo   install missing Debian packages, build (Release, build/), refine a bundled mesh
 #   ./run.sh test   the same set-up, then every test through ctest
-# Environment: BUILD_DIR (default build), CMAKE_ARGS (extra configure flags), JOBS.
+#   ./run.sh fuzz [obj|topology]   also clang; build the libFuzzer targets (build-fuzz/), run each
+# Environment: BUILD_DIR (default build), CMAKE_ARGS (extra configure flags), JOBS; for fuzz:
+# FUZZ_BUILD_DIR (default build-fuzz), FUZZ_SECONDS per target (default 60), FUZZ_ARGS (more
+# libFuzzer flags, e.g. -jobs=4 -workers=4).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -57,8 +60,40 @@ test)
     fi
     exit $status
     ;;
+fuzz)
+    PACKAGES+=(clang libclang-rt-14-dev)
+    install_missing
+    FUZZ_BUILD_DIR=${FUZZ_BUILD_DIR:-build-fuzz}
+    targets=("${@:2}")
+    [ ${#targets[@]} -eq 0 ] && targets=(obj topology)
+    cmake -S . -B "$FUZZ_BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+          -DQUADTRI_FUZZ=ON ${CMAKE_ARGS:-}
+    cmake --build "$FUZZ_BUILD_DIR" -j "$JOBS" --target "${targets[@]/#/fuzz_}"
+    status=0
+    for target in "${targets[@]}"; do
+        # libFuzzer adds what it finds to its corpus directory: work on a copy, keep the checked-in one.
+        work="$FUZZ_BUILD_DIR/fuzz/$target"
+        rm -rf "$work"
+        mkdir -p "$work/artifacts"
+        cp -r "tests/fuzz/corpus/$target" "$work/corpus"
+        echo "run.sh: fuzzing $target for ${FUZZ_SECONDS:-60} s"
+        if "$FUZZ_BUILD_DIR/bin/fuzz_$target" -max_total_time="${FUZZ_SECONDS:-60}" -timeout=10 -rss_limit_mb=2048 \
+                -artifact_prefix="$work/artifacts/" ${FUZZ_ARGS:-} "$work/corpus" >"$work/fuzz.log" 2>&1; then
+            grep -E '^(Done|#[0-9]+.*DONE)' "$work/fuzz.log" || tail -n 3 "$work/fuzz.log"
+        else
+            status=1
+            tail -n 60 "$work/fuzz.log"
+        fi
+        if [ -n "$(ls -A "$work/artifacts")" ]; then
+            status=1
+            echo "run.sh: fuzz_$target failed; reproduce with: $FUZZ_BUILD_DIR/bin/fuzz_$target FILE" >&2
+            ls -d "$work/artifacts/"* >&2
+        fi
+    done
+    exit $status
+    ;;
 *)
-    echo "usage: ./run.sh demo | test" >&2
+    echo "usage: ./run.sh demo | test | fuzz [obj|topology]" >&2
     exit 2
     ;;
 esac

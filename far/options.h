@@ -92,6 +92,22 @@ private:
     TopologyDiagnostic diagnostic_;
 };
 
+// The memory budget (Options::memoryBudgetBytes) refused a step before its allocations: `subject`
+// says which ("level 4", "the factorized stencils of level 4"), `needed` is what it would have
+// taken at least, counting what the Refiner already holds (`held`).
+class MemoryBudgetError : public TopologyError {
+public:
+    MemoryBudgetError(std::string subject, std::size_t needed, std::size_t held, std::size_t budget);
+    const std::string& subject() const { return subject_; }
+    std::size_t needed() const { return needed_; }
+    std::size_t held() const { return held_; }
+    std::size_t budget() const { return budget_; }
+
+private:
+    std::string subject_;
+    std::size_t needed_, held_, budget_;
+};
+
 const char* toString(Scheme scheme);
 const char* toString(BoundaryInterpolation boundary);
 const char* toString(CreaseMethod method);

@@ -16,8 +16,9 @@ public:
     Refiner(const TopologyDescriptor& desc, const Options& options);
 
     // Refines to `maxLevel` (>= 0), building the topology and per-level stencil table of every
-    // level not yet built. Throws TopologyError, before allocating, if a level's estimated
-    // tables and output exceed options.memoryBudgetBytes. The last level holds only its faces
+    // level not yet built. Throws TopologyError, before allocating, if what the Refiner holds
+    // (bytes()) plus a level's estimated topology, tables and output exceed
+    // options.memoryBudgetBytes; the levels built before stay usable. The last level holds only its faces
     // unless `lastLevel` asks for Full (as OpenSubdiv's fullTopologyInLastLevel); refining
     // further, or asking again with Full, completes it.
     void refineUniform(int maxLevel, TopologyDetail lastLevel = TopologyDetail::FacesOnly);
@@ -38,12 +39,17 @@ public:
     const StencilTable& levelStencils(int L) const { return levelTables_.at(L - 1); }
 
     // Stencils of level L >= 1 over the control (level 0) vertices: the per-level tables
-    // composed, accumulated in double precision.
+    // composed, accumulated in double precision. Throws TopologyError when composing them, with
+    // what the Refiner holds, would pass options.memoryBudgetBytes (counting the double tables
+    // being composed, the float table and a 3-float output for it), before that allocation.
     StencilTable factorizedStencils(int L) const;
 
     // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L
     // (a looser bound while level L-1 holds its faces only).
     std::size_t estimateLevelBytes(int L) const;
+
+    // Bytes the Refiner holds: every level's topology and per-level table.
+    std::size_t bytes() const;
 
 private:
     void completeLevel(int L);  // rebuilds a faces-only level in full

@@ -2,6 +2,9 @@
 // composition of per-level tables into factorized ones.
 #include "far/stencil_table.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "far/sparse_accumulator.h"
 #include "far/weight_pool.h"
 
@@ -42,12 +45,27 @@ StencilTableD toDoubleTable(const StencilTable& t) {
     return out;
 }
 
-StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner) {
+std::size_t bytesOf(const StencilTableD& t) {
+    return (t.sizes.size() + t.offsets.size() + t.indices.size()) * sizeof(int) + t.weights.size() * sizeof(double);
+}
+
+StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes) {
     StencilTableD result;
     result.numSourceVertices = inner.numSourceVertices;
     const int n = int(outer.sizes.size());
+    constexpr std::size_t kEntryBytes = sizeof(int) + sizeof(double), kStencilBytes = 2 * sizeof(int);
+    const std::size_t perStencil = std::size_t(n) * kStencilBytes;
+    if (perStencil > maxBytes) throw std::length_error("stencil table over its memory budget");
+    // The entries are not known until composed: grow the arrays by doubling, but never past the
+    // budget, so that a refusal comes before the allocation that would break it.
+    const std::size_t maxEntries = std::min<std::size_t>((maxBytes - perStencil) / kEntryBytes, (1u << 31) - 1);
     result.sizes.reserve(n);
     result.offsets.reserve(n);
+    auto reserveEntries = [&](std::size_t count) {
+        result.indices.reserve(count);
+        result.weights.reserve(count);
+    };
+    reserveEntries(std::min(maxEntries, outer.indices.size()));
     SparseAccumulator acc(inner.numSourceVertices);
     for (int i = 0; i < n; ++i) {
         for (int k = outer.offsets[i]; k < outer.offsets[i] + outer.sizes[i]; ++k) {
@@ -56,6 +74,9 @@ StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& i
             for (int m = inner.offsets[j]; m < inner.offsets[j] + inner.sizes[j]; ++m)
                 acc.add(inner.indices[m], w * inner.weights[m]);
         }
+        const std::size_t needed = result.indices.size() + std::size_t(acc.size());
+        if (needed > maxEntries) throw std::length_error("stencil table over its memory budget");
+        if (needed > result.indices.capacity()) reserveEntries(std::min(maxEntries, 2 * needed));
         result.offsets.push_back(int(result.indices.size()));
         result.sizes.push_back(acc.flush(result.indices, result.weights));
     }

@@ -43,7 +43,13 @@ struct StencilTableD {
 StencilTable toFloatTable(const StencilTableD& table);
 StencilTableD toDoubleTable(const StencilTable& table);
 
+// Bytes of a table's arrays.
+std::size_t bytesOf(const StencilTableD& table);
+
 // outer ∘ inner: stencils of `outer` (over inner's stencils) expanded over inner's sources.
-StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner);
+// Throws std::length_error before the result's arrays would pass `maxBytes` (or 2^31 - 1
+// entries, the reach of its int offsets); the caller names what was refused.
+StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner,
+                              std::size_t maxBytes = ~std::size_t(0));
 
 }  // namespace quadtri

@@ -44,6 +44,20 @@ std::string TopologyDiagnostic::message() const {
     return text + problem;
 }
 
+MemoryBudgetError::MemoryBudgetError(std::string subject, std::size_t needed, std::size_t held, std::size_t budget)
+    : TopologyError(subject + " needs at least " + std::to_string(needed) + " bytes with the " + std::to_string(held) +
+                    " the Refiner holds, over the budget of " + std::to_string(budget) +
+                    " bytes (Options::memoryBudgetBytes)"),
+      subject_(std::move(subject)), needed_(needed), held_(held), budget_(budget) {}
+
+std::size_t bytesOf(const Topology& t) {
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(t.faceOffsets) + bytes(t.faceVerts) + bytes(t.faceEdges) + bytes(t.faceHole) + bytes(t.edgeVerts) +
+           bytes(t.edgeFaceOffsets) + bytes(t.edgeFaces) + bytes(t.edgeSharpness) + bytes(t.edgeFlags) +
+           bytes(t.vertFaceOffsets) + bytes(t.vertFaces) + bytes(t.vertEdgeOffsets) + bytes(t.vertEdges) +
+           bytes(t.vertSharpness) + bytes(t.vertFlags);
+}
+
 VertexFaceCounts countVertexFaces(const Topology& t, int v) {
     VertexFaceCounts counts;
     for (int i = t.vertFaceOffsets[v]; i < t.vertFaceOffsets[v + 1]; ++i) {
@@ -247,6 +261,13 @@ std::string describeLoops(const FaceLoops& loops) {
 Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
                            std::vector<TopologyDiagnostic>* warnings) {
     validateDescriptor(desc);
+    // Level 0 and its scratch: per vertex its incidence offsets, flags, sharpness and edge
+    // buckets; per corner its face, edge and incidence entries and at most one edge. Checked
+    // before anything is allocated: a descriptor's counts need not match what its arrays hold.
+    std::size_t corners = 0;
+    for (int f = 0; f < desc.numFaces; ++f) corners += std::size_t(desc.numVertsPerFace[f]);
+    const std::size_t estimate = std::size_t(desc.numVertices) * 32 + corners * 64 + std::size_t(desc.numFaces) * 16;
+    if (estimate > options.memoryBudgetBytes) throw MemoryBudgetError("level 0", estimate, 0, options.memoryBudgetBytes);
     Topology t;
     t.numVertices = desc.numVertices;
     // Faces become the simple loops they walk around (face_loops.h); firstFace maps each face of

@@ -64,6 +64,9 @@ enum class TopologyDetail {
     FacesOnly,  // numVertices, faceOffsets, faceVerts and faceHole; every other array empty
 };
 
+// Bytes of a topology's arrays.
+std::size_t bytesOf(const Topology& topology);
+
 // Per-vertex face-type counts: incident quad-like faces (4 or more corners) and triangles.
 struct VertexFaceCounts {
     int quads = 0;

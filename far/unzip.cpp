@@ -6,6 +6,26 @@ namespace quadtri {
 
 bool isNetworkEdge(const Topology& t, int e) { return (t.edgeFlags[e] & kEdgeSeam) && !isInfinite(t.edgeSharpness[e]); }
 
+namespace {
+
+// A crease or corner whose creases are semi-sharp keeps its own position: its child follows the
+// crease rule from the original points, and copies displaced off the crease would tilt the faces
+// beside it a little more each level (the rook's crease corners folded so, 105° to 150° over
+// levels 1-5). Where every crease is infinitely sharp (boundaries) the seam's end is unzipped as
+// before: no test mesh folds there, and quadratic precision at the seam is tested with it.
+bool keepsOnePosition(const Topology& t, int v) {
+    int sharp = 0;
+    bool semiSharp = false;
+    for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i) {
+        const float s = t.edgeSharpness[t.vertEdges[i]];
+        sharp += isSharp(s) ? 1 : 0;
+        semiSharp = semiSharp || isSemiSharp(s);
+    }
+    return sharp >= 2 && semiSharp;
+}
+
+}  // namespace
+
 StencilTableD unzipStencils(const Topology& t, Piece piece) {
     const double sign = piece == Piece::Triangle ? 1.0 : -1.0;
     StencilTableD table;
@@ -17,6 +37,10 @@ StencilTableD unzipStencils(const Topology& t, Piece piece) {
         table.indices.push_back(v);
         table.weights.push_back(1.0);
         const int centre = int(table.weights.size()) - 1;
+        if (keepsOnePosition(t, v)) {
+            table.sizes.push_back(1);
+            continue;
+        }
         for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i) {
             const int e = t.vertEdges[i];
             if (!isNetworkEdge(t, e)) continue;

@@ -17,7 +17,7 @@ bool isNetworkEdge(const Topology& topology, int edge);
 // Vertex v's copy for `piece`, one stencil per vertex of the level, over the level's vertices:
 //   v_t = v + (1/48) Σ_k (w_k − v),   v_q = v − (1/48) Σ_k (w_k − v),
 // w_k the far ends of v's network edges (α = ½ in the paper's family). Off the network a copy
-// is v itself.
+// is v itself, and so is it at a crease or corner vertex with a semi-sharp crease (unzip.cpp).
 StencilTableD unzipStencils(const Topology& topology, Piece piece);
 
 }  // namespace quadtri

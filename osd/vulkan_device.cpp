@@ -72,11 +72,19 @@ void VulkanContext::pickDevice() {
     if (const char* want = std::getenv("QUADTRI_VK_DEVICE"); want && *want) {
         const std::string w(want);
         const bool isIndex = std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-        for (size_t i = 0; i < devices.size() && !physicalDevice_; ++i)
-            if (isIndex ? std::stoul(w) == i : lower(name(devices[i])).find(lower(w)) != std::string::npos)
-                physicalDevice_ = devices[i];
-        if (!physicalDevice_) throw VulkanError("QUADTRI_VK_DEVICE=" + w + " matches none of the " +
-                                                std::to_string(devices.size()) + " Vulkan devices");
+        // Digits are an index (compared as text, so that no number is too long); else a name part.
+        const std::string index = isIndex ? w.substr(std::min(w.find_first_not_of('0'), w.size() - 1)) : w;
+        std::string listing;
+        for (size_t i = 0; i < devices.size(); ++i) {
+            listing += (i ? ", " : "") + std::to_string(i) + " '" + name(devices[i]) + "'";
+            const bool match = isIndex ? index == std::to_string(i) : lower(name(devices[i])).find(lower(w)) != std::string::npos;
+            if (match && !physicalDevice_) physicalDevice_ = devices[i];
+        }
+        if (!physicalDevice_)
+            throw VulkanError("QUADTRI_VK_DEVICE '" + w + "': no device " +
+                              (isIndex ? "with that index" : "whose name contains it") + "; expected an index " +
+                              (devices.size() == 1 ? "0" : "0.." + std::to_string(devices.size() - 1)) +
+                              " or part of a name (" + listing + ")");
         if (!usable(physicalDevice_))
             throw VulkanError("Vulkan device '" + name(physicalDevice_) + "' lacks Vulkan 1.1 or a compute queue");
     } else {

@@ -1,11 +1,14 @@
 // OBJ reading (positions, faces, OpenSubdiv tags, errors) and writing.
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
 #include "tests/test_support.h"
+#include "tools/byte_size.h"
 #include "tools/obj_io.h"
 
 namespace quadtri::io {
@@ -141,6 +144,73 @@ TEST(ObjIo, ApplyTags) {
     EXPECT_TRUE(tagged.leftHanded);
 }
 
+TEST(ObjIo, ByteOrderMarkIsSkipped) {
+    const std::string text = std::string(kQuad) + "f 1 2 3 4\n";
+    ObjMesh plain = parse(text);
+    ObjMesh marked = parse("\xEF\xBB\xBF" + text);
+    EXPECT_EQ(marked.positions, plain.positions);
+    EXPECT_EQ(marked.faceVerts, plain.faceVerts);
+    EXPECT_TRUE(marked.warnings.empty());
+}
+
+TEST(ObjIo, OtherFormatsAreNamed) {
+    expectError(std::string("v 0 0 0\nv 1 0\0 0\n", 18), 2, "not an OBJ text file (byte 0x00 in column 6)");
+    expectError("\x1f\x8b\x08\x00", 1, "not an OBJ text file (byte 0x1F in column 1)");  // gzip
+    expectError("ply\nformat ascii 1.0\nelement vertex 3\n", 1, "a PLY file, not OBJ");
+    expectError("ply\r\nformat binary_little_endian 1.0\r\n", 1, "a PLY file, not OBJ");
+    expectError("{\n  \"asset\": {\"version\": \"2.0\"}\n}\n", 1, "a glTF (JSON) file, not OBJ");
+    expectError(std::string("glTF\x02\0\0\0", 8), 1, "a binary glTF (.glb) file, not OBJ");
+    expectError("solid cube\n  facet normal 0 0 1\n", 1, "an STL file, not OBJ");
+    expectError(std::string("\xFF\xFEv\0 \0", 6), 1, "a UTF-16 text file");
+    // Text that is not OBJ at all: named once, at its first line.
+    expectError("\nHello,\nthis is a letter.\n", 2, "not an OBJ file (no line is an OBJ statement; statement 'Hello,'");
+}
+
+TEST(ObjIo, LongLinesAreCutShortInMessages) {
+    std::string v = "v";
+    for (int i = 0; i < 200000; ++i) v += " 1";
+    expectError(v + "\n", 1, "v takes 3 or 4 coordinates (6 with colour), got 200000");
+    const std::string message = parseError("v 0 0 " + std::string(100000, '7') + "x\n");
+    EXPECT_LT(message.size(), 200u) << message.substr(0, 200);
+}
+
+TEST(ObjIo, TinyCoordinatesRoundToFloat) {
+    ObjMesh m = parse("v 1e-50 -1e-400 1e-40\n");
+    EXPECT_EQ(m.positions[0], 0.0f);
+    EXPECT_EQ(m.positions[1], 0.0f);
+    EXPECT_GT(m.positions[2], 0.0f);  // a denormal, not 0
+    EXPECT_LT(m.positions[2], 1.1e-40f);
+}
+
+TEST(ObjIo, UnknownStatementsWarnOncePerKeyword) {
+    ObjMesh m = parse(std::string(kQuad) + "l 1 2\nf 1 2 3\nl 2 3\ncurv 0 1 1 2\nl 3 4\nt foo 0/0/0\nt foo 0/0/0\n", "w.obj");
+    ASSERT_EQ(m.warnings.size(), 3u);
+    EXPECT_EQ(m.warnings[0], "w.obj:5: unknown statement 'l' ignored, 3 lines in all");
+    EXPECT_EQ(m.warnings[1], "w.obj:8: unknown statement 'curv' ignored");
+    EXPECT_EQ(m.warnings[2], "w.obj:10: unknown tag 'foo' ignored, 2 lines in all");
+    // Many keywords: the first few, then a count.
+    std::string many = "v 0 0 0\n";
+    for (int k = 0; k < 1000; ++k) many += "x" + std::to_string(k) + "\n";
+    ObjMesh n = parse(many, "n.obj");
+    ASSERT_EQ(n.warnings.size(), 9u);
+    EXPECT_EQ(n.warnings[0], "n.obj:2: unknown statement 'x0' ignored");
+    EXPECT_EQ(n.warnings[8], "n.obj: 992 more unknown keywords ignored");
+}
+
+TEST(ObjIo, DescribeUsesTheFileNumbering) {
+    using Component = TopologyDiagnostic::Component;
+    ObjMesh m = parse(std::string(kQuad) + "# faces\nf 1 2 3\nf 1 3 4 3\nt crease 2/1/0 1 3 2.0\n"
+                                           "t corner 1/1/0 2 1.0\nt hole 1/0/0 0\n");
+    EXPECT_EQ(m.describe({Component::Face, 1, 2, "appears more than once"}), "mesh.obj:7: face 2: vertex 3 appears more than once");
+    EXPECT_EQ(m.describe({Component::Crease, 0, -1, "vertices 1, 3 are not an edge of the mesh; crease ignored"}),
+              "mesh.obj:8: t crease: vertices 1, 3 are not an edge of the mesh; crease ignored");
+    EXPECT_EQ(m.describe({Component::Corner, 0, -1, "vertex 2: negative sharpness -1"}),
+              "mesh.obj:9: t corner: vertex 2: negative sharpness -1");
+    EXPECT_EQ(m.describe({Component::Hole, 0, -1, "face index 0 is out of range [0, 0)"}),
+              "mesh.obj:10: t hole: face index 0 is out of range [0, 0)");
+    EXPECT_EQ(m.describe({Component::None, -1, -1, "level 2 is too deep"}), "mesh.obj: level 2 is too deep");
+}
+
 TEST(ObjIo, UnknownTagsAndStatementsWarn) {
     ObjMesh m = parse(std::string(kQuad) + "t smoothtriangles 0/0/1 always\nf 1 2 3\nl 1 2\n", "w.obj");
     ASSERT_EQ(m.warnings.size(), 2u);
@@ -154,8 +224,11 @@ TEST(ObjIo, NumberErrors) {
     expectError("v 0 0 0\nv 1 1.5.2 0\n", 2, "cannot parse coordinate '1.5.2'");
     expectError("v 0 0 nan\n", 1, "cannot parse coordinate");
     expectError("v 0 0 +-1\n", 1, "cannot parse coordinate '+-1'");
-    expectError("v 0 0 1e60\n", 1, "cannot parse coordinate '1e60'");
-    expectError("v 0 0\n", 1, "vertex needs 3 coordinates");
+    expectError("v 0 0 1e60\n", 1, "coordinate '1e60' is beyond the float range");
+    expectError("v 0 0\n", 1, "v takes 3 or 4 coordinates (6 with colour), got 2");
+    expectError("v 0 0 0 1 1\n", 1, "v takes 3 or 4 coordinates (6 with colour), got 5");
+    expectError("v 0 0 0 1 1 1 1\n", 1, "v takes 3 or 4 coordinates (6 with colour), got 7");
+    expectError("v 0 0 0 1 red 1\n", 1, "cannot parse colour 'red'");
     expectError(std::string(kQuad) + "f 1 2 a\n", 5, "cannot parse face index 'a'");
     expectError(std::string(kQuad) + "f 1 2 99999999999\n", 5, "cannot parse face index");
     expectError(std::string(kQuad) + "t crease 2/1/0 0 1 sharp\n", 5, "cannot parse tag value 'sharp'");
@@ -188,14 +261,39 @@ TEST(ObjIo, TagErrors) {
     expectError(q + "t interpolateboundary 2/0/0 1 1\n", 5, "must be 1/0/0");
     expectError(q + "t creasemethod 0/0/1 smooth\n", 5, "creasemethod 'smooth' is not chaikin, uniform or normal");
     expectError(q + "t creasemethod 0/0/0\n", 5, "must be 0/0/1");
+    // Counts up to INT_MAX each: their sum does not overflow.
+    expectError(q + "t crease 2147483647/1/0 0 1 1\n", 5, "announces 2147483648 arguments, has 3");
+    expectError(q + "t crease 2147483647/2147483647/2147483647 0\n", 5, "announces 6442450941 arguments, has 1");
+    expectError(q + "t crease 2147483648/1/0 0 1 1\n", 5, "cannot parse tag count '2147483648'");
 }
+
+// A scratch folder for the file tests, removed afterwards.
+struct ScratchDir {
+    std::filesystem::path path;
+    explicit ScratchDir(const std::string& name) : path(std::filesystem::temp_directory_path() / name) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~ScratchDir() { std::filesystem::remove_all(path); }
+    std::string file(const std::string& name) const { return (path / name).string(); }
+    int entries() const {
+        return int(std::distance(std::filesystem::directory_iterator(path), std::filesystem::directory_iterator()));
+    }
+};
 
 TEST(ObjIo, MissingFile) {
     try {
         readObj("/nonexistent/dir/mesh.obj");
         FAIL() << "no error";
     } catch (const ObjError& e) {
-        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/mesh.obj: cannot open file");
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/mesh.obj: cannot open file (No such file or directory)");
+    }
+    ScratchDir dir("quadtri_test_read_folder");
+    try {
+        readObj(dir.path.string());
+        FAIL() << "no error";
+    } catch (const ObjError& e) {
+        EXPECT_EQ(std::string(e.what()), dir.path.string() + ": is a folder, not an OBJ file");
     }
 }
 
@@ -237,8 +335,101 @@ TEST(ObjIo, WriteToUnwritablePath) {
         writeObj("/nonexistent/dir/out.obj", positions.data(), t);
         FAIL() << "no error";
     } catch (const ObjError& e) {
-        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/out.obj: cannot write file");
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/out.obj: cannot write file (No such file or directory)");
     }
+}
+
+std::string contents(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The error writeReplacing reports, or "" if it succeeds.
+std::string replaceError(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    try {
+        writeReplacing(path, write);
+    } catch (const ObjError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(ObjIo, WriteReplacesTheTargetWhole) {
+    ScratchDir dir("quadtri_test_write_replace");
+    const std::string target = dir.file("mesh.obj");
+    std::ofstream(target) << "old\n";
+    std::filesystem::permissions(target, std::filesystem::perms(0640));
+    EXPECT_EQ(replaceError(target, [](std::ostream& out) { out << "new\n"; }), "");
+    EXPECT_EQ(contents(target), "new\n");
+    EXPECT_EQ(dir.entries(), 1);  // no temporary left
+    EXPECT_EQ(std::filesystem::status(target).permissions(), std::filesystem::perms(0640));
+}
+
+TEST(ObjIo, FailedWriteKeepsTheOldFile) {
+    ScratchDir dir("quadtri_test_write_fail");
+    const std::string target = dir.file("mesh.obj");
+    std::ofstream(target) << "old\n";
+    // A stream that fails midway, as on a full disk.
+    auto fullDisk = [](std::ostream& out) {
+        out << "v 0 0 0\n";
+        out.setstate(std::ios::badbit);
+    };
+    EXPECT_EQ(replaceError(target, fullDisk).rfind(target + ": cannot write file", 0), 0u);
+    EXPECT_EQ(contents(target), "old\n");
+    EXPECT_EQ(dir.entries(), 1);
+    // A writer that throws leaves the same.
+    EXPECT_THROW(writeReplacing(target, [](std::ostream&) { throw std::runtime_error("interrupted"); }),
+                 std::runtime_error);
+    EXPECT_EQ(contents(target), "old\n");
+    EXPECT_EQ(dir.entries(), 1);
+}
+
+TEST(ObjIo, WriteIntoNothingWritable) {
+    ScratchDir dir("quadtri_test_write_nowhere");
+    auto write = [](std::ostream& out) { out << "v 0 0 0\n"; };
+    EXPECT_EQ(replaceError(dir.file("missing/mesh.obj"), write),
+              dir.file("missing/mesh.obj") + ": cannot write file (No such file or directory)");
+    std::filesystem::create_directory(dir.file("folder.obj"));
+    EXPECT_EQ(replaceError(dir.file("folder.obj"), write), dir.file("folder.obj") + ": cannot write file (it is a directory)");
+    std::ofstream(dir.file("plain")) << "old\n";
+    EXPECT_EQ(replaceError(dir.file("plain/mesh.obj"), write),
+              dir.file("plain/mesh.obj") + ": cannot write file (Not a directory)");
+    EXPECT_EQ(contents(dir.file("plain")), "old\n");
+    EXPECT_EQ(dir.entries(), 2);
+    // A device is written in place, and its failure is caught at the flush.
+    if (std::filesystem::exists("/dev/full")) {
+        EXPECT_EQ(replaceError("/dev/full", write), "/dev/full: cannot write file (No space left on device)");
+    }
+}
+
+TEST(ObjIo, WriteThroughASymlinkReplacesItsTarget) {
+    ScratchDir dir("quadtri_test_write_link");
+    std::ofstream(dir.file("real.obj")) << "old\n";
+    std::filesystem::create_symlink("real.obj", dir.file("link.obj"));
+    EXPECT_EQ(replaceError(dir.file("link.obj"), [](std::ostream& out) { out << "new\n"; }), "");
+    EXPECT_TRUE(std::filesystem::is_symlink(dir.file("link.obj")));
+    EXPECT_EQ(contents(dir.file("real.obj")), "new\n");
+    EXPECT_EQ(dir.entries(), 2);
+}
+
+TEST(ByteSize, UnitsAndRefusals) {
+    using cli::parseByteSize;
+    EXPECT_EQ(parseByteSize("0"), std::size_t(0));
+    EXPECT_EQ(parseByteSize("4096"), std::size_t(4096));
+    EXPECT_EQ(parseByteSize("12B"), std::size_t(12));
+    EXPECT_EQ(parseByteSize("3KB"), std::size_t(3000));
+    EXPECT_EQ(parseByteSize("3kib"), std::size_t(3072));
+    EXPECT_EQ(parseByteSize("512MiB"), std::size_t(512) << 20);
+    EXPECT_EQ(parseByteSize("2mb"), std::size_t(2000000));
+    EXPECT_EQ(parseByteSize("8GiB"), std::size_t(8) << 30);
+    EXPECT_EQ(parseByteSize("8 GiB"), std::size_t(8) << 30);
+    EXPECT_EQ(parseByteSize("5GB"), std::size_t(5000000000ull));
+    EXPECT_EQ(parseByteSize("1TiB"), std::size_t(1) << 40);
+    EXPECT_EQ(parseByteSize("2tb"), std::size_t(2000000000000ull));
+    for (const char* bad : {"", "GiB", "8 parsecs", "-1", "+1", "1.5GiB", "8G", "8gibs", "8 ", "8  GiB", "0x10",
+                            "99999999999999999999", "16777216TiB", "18446744073709551616"})
+        EXPECT_FALSE(parseByteSize(bad).has_value()) << bad;
+    EXPECT_EQ(parseByteSize("18446744073709551615"), std::size_t(18446744073709551615ull));
 }
 
 TEST(ObjIo, ReadsOpenSubdivShape) {

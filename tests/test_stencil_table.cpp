@@ -102,6 +102,71 @@ TEST(StencilTableGuard, RefusesLevelsOverBudgetBeforeAllocating) {
     EXPECT_LE(refiner.estimateLevelBytes(refiner.maxLevel()), options.memoryBudgetBytes);
 }
 
+// A UV sphere whose poles are fans of `segments` triangles, quads between `rings` rings: its
+// factorized stencils near the poles span the whole pole ring, so they grow far faster than the
+// per-level tables.
+struct PoleSphere {
+    std::vector<int> sizes, verts;
+    int numVertices = 0;
+    PoleSphere(int segments, int rings) {
+        numVertices = 2 + segments * (rings - 1);
+        auto at = [&](int r, int s) { return 2 + (r - 1) * segments + s % segments; };
+        for (int s = 0; s < segments; ++s) add({0, at(1, s), at(1, s + 1)});
+        for (int r = 1; r + 1 < rings; ++r)
+            for (int s = 0; s < segments; ++s) add({at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1)});
+        for (int s = 0; s < segments; ++s) add({1, at(rings - 1, s + 1), at(rings - 1, s)});
+    }
+    void add(std::initializer_list<int> face) {
+        sizes.push_back(int(face.size()));
+        verts.insert(verts.end(), face);
+    }
+    TopologyDescriptor descriptor() const {
+        TopologyDescriptor d;
+        d.numVertices = numVertices;
+        d.numFaces = int(sizes.size());
+        d.numVertsPerFace = sizes.data();
+        d.faceVertIndices = verts.data();
+        return d;
+    }
+};
+
+TEST(StencilTableGuard, FactorizedTablesAreBudgeted) {
+    const PoleSphere sphere(400, 6);
+    Options options;
+    options.memoryBudgetBytes = 64 << 20;
+    Refiner refiner(sphere.descriptor(), options);
+    ASSERT_NO_THROW(refiner.refineUniform(3));  // per level, 3 levels fit in 64 MiB
+    EXPECT_NO_THROW(refiner.factorizedStencils(1));
+    try {
+        refiner.factorizedStencils(3);  // over 8 M entries, about 100 MB in double
+        FAIL() << "level 3's factorized stencils fit 64 MiB?";
+    } catch (const TopologyError& e) {
+        EXPECT_NE(std::string(e.what()).find("factorized stencils of level 3"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("budget"), std::string::npos) << e.what();
+    }
+    // Under the default budget it fits, and composes what the per-level tables give.
+    Refiner roomy(sphere.descriptor(), Options());
+    roomy.refineUniform(2);
+    const StencilTable factorized = roomy.factorizedStencils(2);
+    EXPECT_EQ(factorized.numStencils(), roomy.level(2).numVertices);
+    EXPECT_LE(factorized.bytes() + roomy.bytes(), Options().memoryBudgetBytes);
+}
+
+// The descriptor's counts are checked against the budget before level 0 is allocated: a count
+// of 2^31 - 1 vertices would be tens of GB of incidence arrays.
+TEST(StencilTableGuard, BaseLevelIsBudgeted) {
+    const PoleSphere sphere(8, 3);
+    TopologyDescriptor d = sphere.descriptor();
+    d.numVertices = 2147483647;
+    try {
+        Refiner refiner(d, Options());
+        FAIL() << "2^31 - 1 vertices fit the default budget?";
+    } catch (const TopologyError& e) {
+        EXPECT_NE(std::string(e.what()).find("level 0"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("budget"), std::string::npos) << e.what();
+    }
+}
+
 TEST(StencilTableGuard, EstimateBoundsTheLevel) {
     // The estimate must not undershoot what a level really holds.
     const RefinedMesh r = refineMesh("mixed/mixed_torus.obj", 3);

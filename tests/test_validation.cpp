@@ -384,26 +384,31 @@ TEST(Validation, NullArraysWithNonzeroCounts) {
 TEST(Validation, MemoryBudget) {
     const LocalMesh m = cube();
     Options tiny;
-    tiny.memoryBudgetBytes = 1000;
+    tiny.memoryBudgetBytes = 3000;  // level 0 fits, level 1 does not
     std::unique_ptr<Refiner> refiner;
     ASSERT_NO_THROW(refiner = std::make_unique<Refiner>(m.descriptor(), tiny));
     const std::size_t estimate = refiner->estimateLevelBytes(1);
-    EXPECT_GT(estimate, 1000u);
+    EXPECT_GT(refiner->bytes() + estimate, 3000u);
     std::string message;
     try {
         refiner->refineUniform(1);
-    } catch (const TopologyError& e) {
+    } catch (const MemoryBudgetError& e) {
         message = e.what();
+        EXPECT_EQ(e.needed(), refiner->bytes() + estimate);
+        EXPECT_EQ(e.held(), refiner->bytes());
+        EXPECT_EQ(e.budget(), 3000u);
+        EXPECT_EQ(e.subject(), "level 1");
     }
-    ASSERT_FALSE(message.empty()) << "a 1000-byte budget was accepted for an estimate of " << estimate;
+    ASSERT_FALSE(message.empty()) << "a 3000-byte budget was accepted for an estimate of " << estimate;
     EXPECT_NE(message.find("bytes"), std::string::npos) << message;
-    EXPECT_NE(message.find(std::to_string(estimate)), std::string::npos) << message;
+    EXPECT_NE(message.find(std::to_string(refiner->bytes() + estimate)), std::string::npos) << message;
     EXPECT_NE(message.find("level 1"), std::string::npos) << message;
     EXPECT_EQ(refiner->maxLevel(), 0) << "refused before building anything";
 
-    // The budget is inclusive: exactly the estimate passes, one byte less fails.
+    // The budget is inclusive: what the Refiner holds plus exactly the estimate passes, one byte
+    // less fails.
     Options exact;
-    exact.memoryBudgetBytes = estimate;
+    exact.memoryBudgetBytes = refiner->bytes() + estimate;
     Refiner fits(m.descriptor(), exact);
     EXPECT_NO_THROW(fits.refineUniform(1));
     EXPECT_EQ(fits.maxLevel(), 1);
@@ -417,7 +422,7 @@ TEST(Validation, MemoryBudget) {
     }
     EXPECT_NE(message.find("level 2"), std::string::npos) << message;
     Options oneLess;
-    oneLess.memoryBudgetBytes = estimate - 1;
+    oneLess.memoryBudgetBytes = exact.memoryBudgetBytes - 1;
     Refiner tight(m.descriptor(), oneLess);
     EXPECT_THROW(tight.refineUniform(1), TopologyError);
 

@@ -1,7 +1,9 @@
 #include "tools/commands.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -19,6 +21,11 @@ namespace {
 
 io::ObjMesh loadMesh(const MeshArgs& args) {
     io::ObjMesh mesh = io::readObj(args.input);
+    if (mesh.numFaces() == 0)
+        throw io::ObjError(args.input + ": no faces to refine (" +
+                           (mesh.numVertices() ? std::to_string(mesh.numVertices()) + " vertices and no f line"
+                                               : std::string("no v or f line")) +
+                           ")");
     for (const std::string& w : mesh.warnings) std::cerr << "quadtri: warning: " << w << "\n";
     return mesh;
 }
@@ -27,12 +34,28 @@ io::ObjMesh loadMesh(const MeshArgs& args) {
 Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options) {
     try {
         Refiner refiner(mesh.descriptor(), options);
-        for (const TopologyDiagnostic& w : refiner.warnings())
-            std::cerr << "quadtri: warning: " << mesh.locate(w) << w.message() << "\n";
+        for (const TopologyDiagnostic& w : refiner.warnings()) std::cerr << "quadtri: warning: " << mesh.describe(w) << "\n";
         return refiner;
+    } catch (const MemoryBudgetError&) {
+        throw;  // main() says which flag to raise
     } catch (const TopologyError& e) {
-        throw io::ObjError(mesh.locate(e.diagnostic()) + e.what());
+        throw io::ObjError(mesh.describe(e.diagnostic()));
     }
+}
+
+// Finite input can still overflow: a scheme with weights of both signs sums terms larger than the
+// result. The error names the vertex in the output file's numbering.
+void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, int level, Scheme scheme) {
+    const auto bad = std::find_if(positions.begin(), positions.end(), [](float x) { return !std::isfinite(x); });
+    if (bad == positions.end()) return;
+    float largest = 0;
+    for (float x : mesh.positions) largest = std::max(largest, std::fabs(x));
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  ": level %d: output vertex %zu has coordinate %g; the input's largest coordinate magnitude, %g, "
+                  "leaves no headroom for the %s weights (scale the mesh down)",
+                  level, size_t(bad - positions.begin()) / 3 + 1, double(*bad), double(largest), toString(scheme));
+    throw io::ObjError(mesh.name + text);
 }
 
 // Defaults, then the file's tags, then explicit flags.
@@ -41,6 +64,7 @@ Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     if (args.scheme) options.scheme = *args.scheme;
     if (args.boundary) options.boundary = *args.boundary;
     if (args.creaseMethod) options.creaseMethod = *args.creaseMethod;
+    if (args.memoryBudget) options.memoryBudgetBytes = *args.memoryBudget;
     return options;
 }
 
@@ -107,13 +131,20 @@ void printBase(const Topology& t, const Options& options) {
 }  // namespace
 
 int runRefine(const RefineArgs& args) {
+    if (args.output.empty()) throw io::ObjError("-o: the output file name is empty");
+    std::string extension = std::filesystem::path(args.output).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (!extension.empty() && extension != ".obj")
+        throw io::ObjError(args.output + ": only OBJ output (.obj) is written, not " + extension);
     io::ObjMesh mesh = loadMesh(args.mesh);
-    Refiner refiner = makeRefiner(mesh, makeOptions(args.mesh, mesh));
+    const Options options = makeOptions(args.mesh, mesh);
+    Refiner refiner = makeRefiner(mesh, options);
     refiner.refineUniform(args.level);
     StencilTable table;
     if (args.level > 0) table = refiner.factorizedStencils(args.level);
     std::vector<float> positions =
         args.level > 0 ? evaluatePositions(args.evaluator, table, mesh.positions) : mesh.positions;
+    checkFinite(positions, mesh, args.level, options.scheme);
     const Topology& top = refiner.level(args.level);
     io::writeObj(args.output, positions.data(), top);
     std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,
@@ -146,9 +177,12 @@ int runInfo(const InfoArgs& args) {
 }
 
 int runDemo(const DemoArgs& args) {
+    if (args.outDir.empty()) throw io::ObjError("--out-dir: the folder name is empty");
     io::ObjMesh mesh = loadMesh(args.mesh);
     Options options = makeOptions(args.mesh, mesh);
-    std::filesystem::create_directories(args.outDir);
+    std::error_code ec;
+    std::filesystem::create_directories(args.outDir, ec);
+    if (ec) throw io::ObjError(args.outDir + ": cannot create the output folder (" + ec.message() + ")");
     const std::string stem = std::filesystem::path(args.mesh.input).stem().string();
 
     const std::unique_ptr<VulkanContext> vulkan = openVulkan();
@@ -171,6 +205,7 @@ int runDemo(const DemoArgs& args) {
         }
         std::nth_element(evalMs.begin(), evalMs.begin() + 3, evalMs.end());
 
+        checkFinite(positions, mesh, L, options.scheme);
         const Topology& t = refiner.level(L);
         char vulkanMs[32] = "-";
         if (vulkan) std::snprintf(vulkanMs, sizeof vulkanMs, "%.3f", vulkanEvalMs(*vulkan, table, mesh.positions, 7));

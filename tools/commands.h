@@ -2,6 +2,7 @@
 // lets TopologyError, io::ObjError and other exceptions escape to main(), which reports them.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +23,7 @@ struct MeshArgs {
     std::optional<Scheme> scheme;                   // default: Schaefer-Warren
     std::optional<BoundaryInterpolation> boundary;  // default: the file's tag, else edge only
     std::optional<CreaseMethod> creaseMethod;       // default: the file's tag, else uniform
+    std::optional<std::size_t> memoryBudget;        // default: Options::memoryBudgetBytes
 };
 
 // Largest refinement level accepted on the command line (the memory budget may refuse less).

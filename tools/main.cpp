@@ -7,6 +7,7 @@
 #include <new>
 
 #include "far/options.h"
+#include "tools/byte_size.h"
 #include "tools/commands.h"
 #include "tools/obj_io.h"
 
@@ -50,6 +51,15 @@ void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
            "--crease-method", [&args](const std::string& s) { args.creaseMethod = creaseMethods.at(s); },
            "Sharpness decay per level; overrides the file's creasemethod tag (default uniform)")
         ->check(oneOf(creaseMethods, "crease method"));
+    cmd.add_option_function<std::string>(
+           "--memory-budget", [&args](const std::string& s) { args.memoryBudget = cli::parseByteSize(s); },
+           "Refuse a level whose estimated tables and output exceed SIZE (e.g. 512MiB, 8GiB; default 4GiB)")
+        ->type_name("SIZE")
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return cli::parseByteSize(s) ? std::string() : "'" + s + "' is not a size: expected " + cli::kByteSizeForms;
+            },
+            "SIZE"));
 }
 
 CLI::Option* addLevel(CLI::App& cmd, const char* name, int& level, const char* help, int minLevel = 0) {
@@ -100,6 +110,8 @@ int main(int argc, char** argv) {
         return cli::runDemo(demo);
     } catch (const io::ObjError& e) {
         std::cerr << "quadtri: " << e.what() << "\n";  // already "file:line: problem"
+    } catch (const MemoryBudgetError& e) {
+        std::cerr << "quadtri: " << cli::budgetRefusal(input, e) << "\n";
     } catch (const TopologyError& e) {
         std::cerr << "quadtri: " << input << ": " << e.what() << "\n";
     } catch (const std::bad_alloc&) {

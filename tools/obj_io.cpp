@@ -1,19 +1,28 @@
 #include "tools/obj_io.h"
 
 #include <cctype>
+#include <cerrno>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <ostream>
 #include <string_view>
+#include <unordered_map>
 
 namespace quadtri::io {
 
 namespace {
 
-// Parses one OBJ stream; `fail` and `warn` prefix messages with "name:line: ".
+// " (No such file or directory)" for an errno value; "" for 0.
+std::string reason(int error) { return error ? std::string(" (") + std::strerror(error) + ")" : std::string(); }
+
+// Parses one OBJ stream; `fail` prefixes messages with "name:line: ".
 class Parser {
 public:
     Parser(std::istream& in, const std::string& name) : in_(in), name_(name) { mesh_.name = name; }
@@ -22,22 +31,97 @@ public:
         std::string line;
         while (std::getline(in_, line)) {
             ++line_;
+            if (line_ == 1 && line.rfind(kUtf8Bom, 0) == 0) line.erase(0, kUtf8Bom.size());
+            checkText(line);
             parseLine(line);
         }
         if (in_.bad()) throw ObjError(line_ == 0 ? name_ + ": cannot read file" : where(line_ + 1) + "read error");
+        reportUnknown();
         checkFaceIndices();
         return std::move(mesh_);
     }
 
 private:
+    static constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
+    // Statements this reader skips without a word: parts of OBJ that refinement does not use.
+    static bool ignored(std::string_view key) {
+        return key == "vt" || key == "vn" || key == "vp" || key == "o" || key == "g" || key == "s" ||
+               key == "usemtl" || key == "mtllib";
+    }
+
+    struct Unknown {
+        std::string what;  // "statement 'l'" or "tag 'smoothtriangles'"
+        int firstLine = 0;
+        int count = 0;
+    };
+
     std::istream& in_;
     const std::string& name_;
     int line_ = 0;
+    bool sawContent_ = false;  // a line with a statement was seen (for the format sniffing)
+    bool sawObjStatement_ = false;
+    std::vector<Unknown> unknown_;  // in order of first appearance
+    std::unordered_map<std::string, size_t> unknownIndex_;  // Unknown::what -> its place in unknown_
     ObjMesh mesh_;
 
     std::string where(int line) const { return name_ + ":" + std::to_string(line) + ": "; }
     [[noreturn]] void fail(const std::string& problem) const { throw ObjError(where(line_) + problem); }
-    void warn(const std::string& problem) { mesh_.warnings.push_back(where(line_) + problem); }
+
+    // `s` quoted for a message, cut short so that one huge token cannot flood the terminal.
+    static std::string quote(std::string_view s) {
+        constexpr size_t kMax = 40;
+        std::string text(1, '\'');
+        text.append(s.substr(0, kMax)).append(s.size() > kMax ? "...'" : "'");
+        return text;
+    }
+
+    // Binary data (a mesh in another format, a compressed file) has control bytes that OBJ text
+    // never has; the first line tells other text formats apart.
+    void checkText(std::string_view line) const {
+        if (line_ == 1 && line.rfind("glTF", 0) == 0) fail("a binary glTF (.glb) file, not OBJ");
+        if (line_ == 1 && (line.rfind("\xFF\xFE", 0) == 0 || line.rfind("\xFE\xFF", 0) == 0))
+            fail("a UTF-16 text file; OBJ is read as ASCII or UTF-8");
+        for (size_t i = 0; i < line.size(); ++i) {
+            const unsigned char c = static_cast<unsigned char>(line[i]);
+            if ((c < 0x20 && c != '\t' && c != '\r' && c != '\v' && c != '\f') || c == 0x7F) {
+                char byte[8];
+                std::snprintf(byte, sizeof byte, "0x%02X", c);
+                fail("not an OBJ text file (byte " + std::string(byte) + " in column " + std::to_string(i + 1) + ")");
+            }
+        }
+    }
+
+    void sniffFormat(const std::vector<std::string_view>& tok) const {
+        if (line_ == 1 && tok.size() == 1 && tok[0] == "ply") fail("a PLY file, not OBJ");
+        if (tok[0][0] == '{') fail("a glTF (JSON) file, not OBJ");
+        if (tok[0] == "solid") fail("an STL file, not OBJ");
+    }
+
+    void noteUnknown(std::string what) {
+        const auto [it, isNew] = unknownIndex_.emplace(what, unknown_.size());
+        if (isNew)
+            unknown_.push_back({std::move(what), line_, 1});
+        else
+            ++unknown_[it->second].count;
+    }
+
+    // One warning per unknown keyword, for the first few keywords; a file of nothing else is not
+    // OBJ at all.
+    void reportUnknown() {
+        constexpr size_t kMaxWarnings = 8;
+        if (!sawObjStatement_ && !unknown_.empty())
+            throw ObjError(where(unknown_[0].firstLine) + "not an OBJ file (no line is an OBJ statement; " +
+                           unknown_[0].what + " is not one)");
+        for (size_t i = 0; i < unknown_.size() && i < kMaxWarnings; ++i) {
+            const Unknown& u = unknown_[i];
+            mesh_.warnings.push_back(where(u.firstLine) + "unknown " + u.what + " ignored" +
+                                     (u.count > 1 ? ", " + std::to_string(u.count) + " lines in all" : ""));
+        }
+        if (unknown_.size() > kMaxWarnings)
+            mesh_.warnings.push_back(name_ + ": " + std::to_string(unknown_.size() - kMaxWarnings) +
+                                     " more unknown keywords ignored");
+    }
 
     static std::vector<std::string_view> split(std::string_view s) {
         std::vector<std::string_view> tokens;
@@ -60,7 +144,7 @@ private:
         int value = 0;
         auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
         if (ec != std::errc() || end != t.data() + t.size() || t.empty())
-            fail("cannot parse " + std::string(what) + " '" + std::string(s) + "'");
+            fail("cannot parse " + std::string(what) + " " + quote(s));
         return value;
     }
 
@@ -68,8 +152,16 @@ private:
         std::string_view t = skipPlus(s);
         float value = 0;
         auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-        if (ec != std::errc() || end != t.data() + t.size() || t.empty() || !std::isfinite(value))
-            fail("cannot parse " + std::string(what) + " '" + std::string(s) + "'");
+        if (end != t.data() + t.size() || t.empty() || (ec != std::errc() && ec != std::errc::result_out_of_range) ||
+            !std::isfinite(value))
+            fail("cannot parse " + std::string(what) + " " + quote(s));
+        if (ec == std::errc::result_out_of_range) {
+            // Too small for a float rounds to it (1e-50 is 0); too large is refused.
+            const double d = std::strtod(std::string(t).c_str(), nullptr);
+            if (!(std::fabs(d) <= double(FLT_MAX)))
+                fail(std::string(what) + " " + quote(s) + " is beyond the float range (largest 3.4e38)");
+            value = float(d);
+        }
         return value;
     }
 
@@ -78,6 +170,8 @@ private:
         if (hash != std::string_view::npos) line = line.substr(0, hash);
         std::vector<std::string_view> tok = split(line);
         if (tok.empty()) return;
+        if (!sawContent_) sniffFormat(tok);
+        sawContent_ = true;
         std::string_view key = tok[0];
         if (key == "v") {
             parseVertex(tok);
@@ -85,18 +179,19 @@ private:
             parseFace(tok);
         } else if (key == "t") {
             parseTag(tok);
-        } else if (key == "vt" || key == "vn" || key == "vp" || key == "o" || key == "g" || key == "s" ||
-                   key == "usemtl" || key == "mtllib") {
-            // Not needed for refinement.
-        } else {
-            warn("unknown statement '" + std::string(key) + "' ignored");
+        } else if (!ignored(key)) {
+            noteUnknown("statement " + quote(key));
+            return;
         }
+        sawObjStatement_ = true;
     }
 
     void parseVertex(const std::vector<std::string_view>& tok) {
-        if (tok.size() < 4) fail("vertex needs 3 coordinates");
-        for (int c = 1; c <= 3; ++c) mesh_.positions.push_back(toFloat(tok[c], "coordinate"));
-        for (size_t c = 4; c < tok.size(); ++c) toFloat(tok[c], "coordinate");  // w, or vertex colours
+        const size_t n = tok.size() - 1;
+        if (n != 3 && n != 4 && n != 6)
+            fail("v takes 3 or 4 coordinates (6 with colour), got " + std::to_string(n));
+        for (size_t c = 1; c <= 3; ++c) mesh_.positions.push_back(toFloat(tok[c], "coordinate"));
+        for (size_t c = 4; c <= n; ++c) toFloat(tok[c], n == 4 ? "coordinate" : "colour");  // checked, not used
     }
 
     void parseFace(const std::vector<std::string_view>& tok) {
@@ -138,7 +233,7 @@ private:
         std::string name(tok[1]);
         if (name != "crease" && name != "corner" && name != "hole" && name != "interpolateboundary" &&
             name != "creasemethod") {
-            warn("unknown tag '" + name + "' ignored");
+            noteUnknown("tag " + quote(name));
             return;
         }
         if (tok.size() < 3) fail("tag '" + name + "' has no argument counts");
@@ -147,14 +242,16 @@ private:
         for (int i = 0; i < 3; ++i) {
             size_t slash = spec.find('/');
             if ((i < 2) == (slash == std::string_view::npos))
-                fail("tag '" + name + "': cannot parse counts '" + std::string(tok[2]) + "'");
+                fail("tag '" + name + "': cannot parse counts " + quote(tok[2]));
             counts[i] = toInt(spec.substr(0, slash), "tag count");
-            if (counts[i] < 0) fail("tag '" + name + "': negative count in '" + std::string(tok[2]) + "'");
+            if (counts[i] < 0) fail("tag '" + name + "': negative count in " + quote(tok[2]));
             spec = i < 2 ? spec.substr(slash + 1) : std::string_view();
         }
         const int nInt = counts[0], nFloat = counts[1], nString = counts[2];
-        if (tok.size() - 3 != size_t(nInt) + size_t(nFloat) + size_t(nString))
-            fail("tag '" + name + "' announces " + std::to_string(nInt + nFloat + nString) + " arguments, has " +
+        // Each count may be up to INT_MAX: add them in 64 bits.
+        const long long announced = (long long)nInt + nFloat + nString;
+        if ((long long)tok.size() - 3 != announced)
+            fail("tag '" + name + "' announces " + std::to_string(announced) + " arguments, has " +
                  std::to_string(tok.size() - 3));
         std::vector<int> ints;
         std::vector<float> floats;
@@ -239,7 +336,7 @@ Options ObjMesh::applyTags(Options base) const {
     return base;
 }
 
-std::string ObjMesh::locate(const TopologyDiagnostic& diagnostic) const {
+std::string ObjMesh::describe(const TopologyDiagnostic& diagnostic) const {
     using Component = TopologyDiagnostic::Component;
     const Component c = diagnostic.component;
     const std::vector<int>* lines = c == Component::Face     ? &faceLines
@@ -248,15 +345,26 @@ std::string ObjMesh::locate(const TopologyDiagnostic& diagnostic) const {
                                     : c == Component::Hole   ? &holeLines
                                                              : nullptr;
     const int i = diagnostic.index;
-    if (lines && i >= 0 && size_t(i) < lines->size()) return name + ":" + std::to_string((*lines)[i]) + ": ";
-    return name + ": ";
+    if (!lines || i < 0 || size_t(i) >= lines->size()) return name + ": " + diagnostic.message();
+    std::string text = name + ":" + std::to_string((*lines)[i]) + ": ";
+    if (c == Component::Face) {
+        text += "face " + std::to_string(i + 1) + ": ";
+        if (diagnostic.vertex >= 0) text += "vertex " + std::to_string(diagnostic.vertex + 1) + " ";
+    } else {
+        text += c == Component::Crease ? "t crease: " : c == Component::Corner ? "t corner: " : "t hole: ";
+        if (diagnostic.vertex >= 0) text += "vertex " + std::to_string(diagnostic.vertex) + " ";
+    }
+    return text + diagnostic.problem;
 }
 
 ObjMesh parseObj(std::istream& in, const std::string& name) { return Parser(in, name).run(); }
 
 ObjMesh readObj(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw ObjError(path + ": is a folder, not an OBJ file");
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw ObjError(path + ": cannot open file");
+    if (!in) throw ObjError(path + ": cannot open file" + reason(errno));
     return parseObj(in, path);
 }
 
@@ -275,12 +383,68 @@ void writeObj(std::ostream& out, const float* positions, const Topology& topolog
     }
 }
 
-void writeObj(const std::string& path, const float* positions, const Topology& topology) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw ObjError(path + ": cannot write file");
-    writeObj(out, positions, topology);
+namespace {
+
+// A fresh file beside `target`, created exclusively so that no other file is truncated.
+std::string createTemporary(const std::filesystem::path& target) {
+    std::string hidden(1, '.');
+    hidden += target.filename().string();
+    const std::string stem = (target.parent_path() / hidden).string();
+    for (int attempt = 0;; ++attempt) {
+        const std::string name = stem + "." + std::to_string(attempt) + ".tmp";
+        errno = 0;
+        if (std::FILE* f = std::fopen(name.c_str(), "wbx")) {
+            std::fclose(f);
+            return name;
+        }
+        if (errno != EEXIST || attempt == 99) throw ObjError(target.string() + ": cannot write file" + reason(errno));
+    }
+}
+
+// Runs `write` on `out` (already open on `name`) and closes it; false if any of it failed.
+bool writeAndClose(std::ofstream& out, const std::function<void(std::ostream&)>& write) {
+    write(out);
+    out.flush();
+    const bool written = bool(out);
     out.close();
-    if (!out) throw ObjError(path + ": cannot write file");
+    return written && bool(out);
+}
+
+}  // namespace
+
+void writeReplacing(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    namespace fs = std::filesystem;
+    const std::string failed = path + ": cannot write file";
+    std::error_code ec;
+    fs::path target = fs::path(path);
+    if (fs::is_symlink(fs::symlink_status(target, ec))) {  // replace what the link names, not the link
+        target = fs::canonical(target, ec);
+        if (ec) throw ObjError(failed + reason(ec.value()));
+    }
+    const fs::file_status status = fs::status(target, ec);  // file_type::not_found if there is none
+    if (fs::is_directory(status)) throw ObjError(failed + " (it is a directory)");
+    if (fs::exists(status) && !fs::is_regular_file(status)) {  // a device or a pipe: nothing to replace
+        std::ofstream out(target, std::ios::binary);
+        errno = 0;
+        if (!out || !writeAndClose(out, write)) throw ObjError(failed + reason(errno));
+        return;
+    }
+    const std::string temporary = createTemporary(target);
+    try {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        errno = 0;
+        if (!out || !writeAndClose(out, write)) throw ObjError(failed + reason(errno));
+        if (fs::exists(status)) fs::permissions(temporary, status.permissions(), ec);  // keep the old file's mode
+        fs::rename(temporary, target, ec);
+        if (ec) throw ObjError(failed + reason(ec.value()));
+    } catch (...) {
+        fs::remove(temporary, ec);
+        throw;
+    }
+}
+
+void writeObj(const std::string& path, const float* positions, const Topology& topology) {
+    writeReplacing(path, [&](std::ostream& out) { writeObj(out, positions, topology); });
 }
 
 }  // namespace quadtri::io

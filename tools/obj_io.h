@@ -2,6 +2,7 @@
 // `t creasemethod`), as described in shared/meshes/README.md.
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -42,15 +43,28 @@ struct ObjMesh {
     TopologyDescriptor descriptor() const;
     // `base` with the boundary and crease method replaced where the file has tags for them.
     Options applyTags(Options base) const;
-    // "file:line: " of the face, crease, corner or hole a diagnostic names, else "file: ".
-    std::string locate(const TopologyDiagnostic& diagnostic) const;
+    // The whole message in the file's numbering, "file:line: " first: a face is the K-th `f`
+    // statement with 1-based vertices ("face 2: vertex 4 appears more than once"); a tag keeps
+    // the 0-based indices its own syntax uses ("t crease: vertices 1, 3 are not an edge ...").
+    std::string describe(const TopologyDiagnostic& diagnostic) const;
 };
 
+// ObjError names the line for anything that is not an OBJ mesh statement by statement: binary
+// data, PLY, glTF or STL content, malformed numbers and indices, tags. Unknown statements are
+// warned about once per keyword. A UTF-8 byte-order mark is skipped.
 ObjMesh parseObj(std::istream& in, const std::string& name);
 ObjMesh readObj(const std::string& path);  // ObjError if the file cannot be opened
 
 // Writes positions (3 floats each, %.9g) and the non-hole faces of `topology`, 1-based.
 void writeObj(std::ostream& out, const float* positions, const Topology& topology);
+// The same into the file `path`, through writeReplacing.
 void writeObj(const std::string& path, const float* positions, const Topology& topology);
+
+// Writes `path` through `write` into a temporary file beside it and renames that over `path` once
+// every byte is written and the file is closed, so that a failure or a kill leaves any old
+// `path` whole. An existing non-regular target (/dev/stdout, a pipe) is written directly. On any
+// failure, including `write` leaving the stream failed or throwing, the temporary is removed
+// and ObjError says "path: cannot write file (reason)".
+void writeReplacing(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace quadtri::io
