@@ -4,8 +4,8 @@
 // faces (corners of one face), non-manifold fins and bow ties, the tetrahedron and octahedron
 // (Zorin's K = 3 and K = 4). High end: a UV sphere of 2000 segments, whose poles have valence
 // 2000, refined to level 2. Its ctest TIMEOUT is the guard against rules that walk a pole's ring
-// once per edge (the sphere took minutes so; it takes a second or two when every rule costs the
-// size of the mask it writes).
+// once per edge (catmark-butterfly's case took 30-70 s so; about a second when every rule costs
+// the size of the mask it writes).
 #include <gtest/gtest.h>
 
 #include <cmath>
