@@ -9,12 +9,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "far/refiner.h"
 #include "tests/local_meshes.h"
 #include "tests/seam_support.h"
+
+namespace quadtri {
+// Test names and messages show the scheme's name, not its bytes.
+void PrintTo(Scheme scheme, std::ostream* out) { *out << toString(scheme); }
+}  // namespace quadtri
 
 namespace {
 
