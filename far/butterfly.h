@@ -66,8 +66,9 @@ private:
     int otherFace(int edge, int face) const;
     // Vertex across edge (x, y) from `triangle`, or -1 when that face is missing or no triangle.
     int wing(int triangle, int x, int y) const;
-    // Adds the wing across (x, y) from the triangle (x, y, z); a missing wing is replaced by the
-    // reflection x + y − z, which keeps the mask affine invariant and exact on linear data.
+    // Adds the wing across (x, y) from the triangle (x, y, z); a missing wing, and one across a
+    // crease (by the crease's sharpness, up to 1), is replaced by the reflection x + y − z, which
+    // keeps the mask affine invariant and exact on linear data.
     void addWing(int triangle, int x, int y, int z, double weight);
     // A Butterfly side (the triangle's opposite corner and its two wings) with no seam vertex.
     bool cleanSide(int triangle, int a, int b) const;
