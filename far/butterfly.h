@@ -12,7 +12,8 @@
 //     normal jumps shrink fastest;
 //   - sharp edges and creases whose faces are triangles, and crease vertices on the seam: curve
 //     rules reproducing cubics under the curve quasi-interpolant (4-point on the triangle side,
-//     cubic B-spline on the quad side, solved in between; butterfly_curve.cpp).
+//     cubic B-spline on the quad side, solved in between; butterfly_curve.cpp). The surface
+//     masks do not read across a crease: a wing there is reflected, as a missing one is.
 #pragma once
 
 #include <cstdint>
