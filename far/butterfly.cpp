@@ -2,6 +2,7 @@
 // or Zorin's, or was derived by docs/catmark_butterfly/derive_seam_rules.py.
 #include "far/butterfly.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace quadtri {
@@ -282,12 +283,18 @@ int CatmarkButterflyMasks::wing(int f, int x, int y) const {
     return g >= 0 && t_.faceSize(g) == 3 ? thirdVertex(g, x, y) : -1;
 }
 
+// Across a crease the wing lies on the crease's other side, which must not pull this side's
+// points (the crease is refined from its own points only): it is reflected too, in the share the
+// crease edge's own point takes the crease rule (all of it from sharpness 1, s below), so that the
+// surface moves continuously with the sharpness.
 void CatmarkButterflyMasks::addWing(int f, int x, int y, int z, double weight) {
     const int w = wing(f, x, y);
-    if (w >= 0) return acc_.add(w, weight);
-    acc_.add(x, weight);
-    acc_.add(y, weight);
-    acc_.add(z, -weight);
+    const double reflected = w < 0 ? 1.0 : std::min(1.0, double(t_.edgeSharpness[edgeOfFace(f, x, y)]));
+    if (reflected < 1.0) acc_.add(w, weight * (1.0 - reflected));
+    if (reflected == 0.0) return;
+    acc_.add(x, weight * reflected);
+    acc_.add(y, weight * reflected);
+    acc_.add(z, -weight * reflected);
 }
 
 bool CatmarkButterflyMasks::cleanSide(int f, int a, int b) const {

@@ -12,7 +12,8 @@
 //     normal jumps shrink fastest;
 //   - sharp edges and creases whose faces are triangles, and crease vertices on the seam: curve
 //     rules reproducing cubics under the curve quasi-interpolant (4-point on the triangle side,
-//     cubic B-spline on the quad side, solved in between; butterfly_curve.cpp).
+//     cubic B-spline on the quad side, solved in between; butterfly_curve.cpp). The surface
+//     masks do not read across a crease: a wing there is reflected, as a missing one is.
 #pragma once
 
 #include <cstdint>
@@ -66,8 +67,9 @@ private:
     int otherFace(int edge, int face) const;
     // Vertex across edge (x, y) from `triangle`, or -1 when that face is missing or no triangle.
     int wing(int triangle, int x, int y) const;
-    // Adds the wing across (x, y) from the triangle (x, y, z); a missing wing is replaced by the
-    // reflection x + y − z, which keeps the mask affine invariant and exact on linear data.
+    // Adds the wing across (x, y) from the triangle (x, y, z); a missing wing, and one across a
+    // crease (by the crease's sharpness, up to 1), is replaced by the reflection x + y − z, which
+    // keeps the mask affine invariant and exact on linear data.
     void addWing(int triangle, int x, int y, int z, double weight);
     // A Butterfly side (the triangle's opposite corner and its two wings) with no seam vertex.
     bool cleanSide(int triangle, int a, int b) const;

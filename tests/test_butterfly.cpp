@@ -466,6 +466,50 @@ TEST(ButterflyCrease, CreaseAcrossTheSeam) {
     expect(vertexChild(c, 1, 4.5), {{1, 4.5, 1.0}}, "crease vertex on the triangle side");
 }
 
+// The lattice of section 1 with a crease along j = 4, at `sharpness`.
+Chain creasedLattice(int n, const std::vector<float>& xyz, float sharpness, int levels) {
+    const Lattice m = lattice(n);
+    std::vector<int> pairs;
+    for (int i = 0; i < n; ++i) pairs.insert(pairs.end(), {i * (n + 1) + 4, (i + 1) * (n + 1) + 4});
+    const std::vector<float> weights(size_t(n), sharpness);
+    TopologyDescriptor desc = m.descriptor();
+    desc.numCreases = n;
+    desc.creaseVertexPairs = pairs.data();
+    desc.creaseWeights = weights.data();
+    return refineChain(desc, xyz, butterflyOptions(BoundaryInterpolation::EdgeAndCorner), levels);
+}
+
+// A plane folded along an infinitely sharp crease (z = 0 for j <= 4, z = 2(j - 4) beyond) stays
+// the two planes: each side is refined from its own points, a wing across the crease being
+// reflected (x + y − z, on that side's plane). Reading the other side's wing would lift the points
+// next to the crease off their plane.
+TEST(ButterflyCrease, EachSideOfACreaseReadsOnlyItself) {
+    constexpr int n = 8;
+    std::vector<float> xyz = lattice(n).xyz;
+    for (size_t v = 0; 3 * v < xyz.size(); ++v) xyz[3 * v + 2] = std::max(0.0f, 2.0f * (xyz[3 * v + 1] - 4.0f));
+    const Chain c = creasedLattice(n, xyz, kInfiniteSharpness, 3);
+    const std::vector<double>& refined = c.positions.back();
+    for (size_t v = 0; 3 * v < refined.size(); ++v) {
+        const double y = refined[3 * v + 1], z = refined[3 * v + 2];
+        EXPECT_NEAR(z, std::max(0.0, 2.0 * (y - 4.0)), 1e-9) << "level-3 vertex " << v << " at y = " << y;
+    }
+}
+
+// The edge (4,3)-(4,4) has one wing across the crease: (5,5), across (4,4)-(5,4) from the
+// triangle (4,3), (5,4), (4,4). It is reflected in the share min(s, 1) that the crease edge's own
+// point takes the crease rule: −1/16 (1 − r) at (5,5) and −r/16 on (4,4) + (5,4) − (4,3).
+TEST(ButterflyCrease, WingAcrossASemiSharpCreaseIsReflectedBySharpness) {
+    constexpr int n = 8;
+    for (float sharpness : {kInfiniteSharpness, 2.0f, 0.5f, 0.25f}) {
+        const Chain c = creasedLattice(n, lattice(n).xyz, sharpness, 1);
+        const double r = std::min(1.0, double(sharpness));
+        expectStencil(c.tables[0], edgeChild(c, 4, 3, 4, 4), c.positions[0],
+                      {{4, 3, 0.5 + r / 16}, {4, 4, 0.5 - r / 16}, {3, 3, 0.125}, {5, 4, 0.125 - r / 16},
+                       {3, 2, -0.0625}, {3, 4, -0.0625}, {5, 3, -0.0625}, {5, 5, -(1 - r) / 16}},
+                      "edge next to a crease of sharpness " + std::to_string(sharpness));
+    }
+}
+
 // Quadratic generation: control values Q f (Q⁻f = f − h²(f_xx + f_yy)/6 on the quad side and the
 // seam, Q⁺f = f on the triangle side, h the control spacing) give after one level Q f with h/2 at
 // every refined vertex three or more rings from the outer boundary: S Q f = Q σf, and σ halves
