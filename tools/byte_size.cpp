@@ -62,7 +62,7 @@ std::optional<std::size_t> parseByteSize(std::string_view text) {
 
 std::string budgetRefusal(const std::string& input, const MemoryBudgetError& e) {
     std::string text = input + ": " + e.subject() + " needs at least " + bytesText(e.needed());
-    if (e.held() > 0) text += " (with the " + bytesText(e.held()) + " of the levels already built)";
+    if (e.held() > 0) text += ", " + bytesText(e.held()) + " of them held by the levels already built";
     return text + ", over the memory budget of " + bytesText(e.budget()) + "; raise --memory-budget (e.g. --memory-budget " +
            budgetAbove(e.needed()) + ") or ask for fewer levels";
 }

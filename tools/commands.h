@@ -12,6 +12,7 @@
 #include "far/stencil_table.h"
 
 namespace quadtri {
+class Refiner;
 class VulkanContext;
 }
 
@@ -39,9 +40,11 @@ struct RefineArgs {
     EvaluatorKind evaluator = EvaluatorKind::Cpu;
 };
 
-// 3-float positions through `table` with the chosen evaluator. Vulkan without a usable device
-// falls back to the CPU evaluator, saying so on stderr.
-std::vector<float> evaluatePositions(EvaluatorKind kind, const StencilTable& table, const std::vector<float>& control);
+// 3-float positions of level `level` (>= 1) of `refiner`, through its per-level tables one after
+// another with the chosen evaluator (linear in the tables; a factorized table can be far larger
+// near high-valence vertices). Vulkan without a usable device falls back to the CPU evaluator,
+// saying so on stderr.
+std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, int level, const std::vector<float>& control);
 
 // For the demo's Vulkan column: a headless context, or null (saying why on stderr) without a device.
 std::unique_ptr<VulkanContext> openVulkan();

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "far/refiner.h"
 #include "osd/cpu_evaluator.h"
 #include "osd/tbb_evaluator.h"
 #include "osd/vulkan_evaluator.h"
@@ -10,31 +11,51 @@
 
 namespace quadtri::cli {
 
-std::vector<float> evaluatePositions(EvaluatorKind kind, const StencilTable& table, const std::vector<float>& control) {
+namespace {
+
+// Levels 1..level in one Vulkan buffer, one dispatch per level; the last level read back.
+std::vector<float> evaluateLevelsOnVulkan(const Refiner& refiner, int level, const std::vector<float>& control) {
     const BufferDescriptor d(0, 3, 3);
-    std::vector<float> out(std::size_t(table.numStencils()) * 3);
+    VulkanContext ctx;
+    std::vector<VulkanStencilTable> tables;
+    tables.reserve(std::size_t(level));
+    for (int L = 1; L <= level; ++L) tables.emplace_back(ctx, refiner.levelStencils(L));
+    std::vector<const VulkanStencilTable*> pointers;
+    for (const VulkanStencilTable& t : tables) pointers.push_back(&t);
+    const std::vector<int> first = VulkanEvaluator::levelFirstElements(pointers);
+    VulkanVertexBuffer all = VulkanVertexBuffer::create(ctx, first.back(), 3);
+    all.updateData(control.data(), 0, refiner.level(0).numVertices);
+    VulkanEvaluator evaluator(ctx);
+    evaluator.EvalLevelsAndWait(all, d, pointers);
+    std::vector<float> everything(std::size_t(first.back()) * 3);
+    all.readBack(everything.data());
+    std::fprintf(stderr, "quadtri: evaluated on Vulkan device %s\n", ctx.deviceName().c_str());
+    return std::vector<float>(everything.begin() + 3 * std::ptrdiff_t(first[std::size_t(level)]), everything.end());
+}
+
+}  // namespace
+
+std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, int level, const std::vector<float>& control) {
     if (kind == EvaluatorKind::Vulkan) {
         try {
-            VulkanContext ctx;
-            VulkanStencilTable gpuTable(ctx, table);
-            VulkanVertexBuffer src = VulkanVertexBuffer::create(ctx, table.numSourceVertices, 3);
-            VulkanVertexBuffer dst = VulkanVertexBuffer::create(ctx, table.numStencils(), 3);
-            src.updateData(control.data(), 0, table.numSourceVertices);
-            VulkanEvaluator evaluator(ctx);
-            evaluator.EvalStencilsAndWait(src, d, dst, d, gpuTable);
-            dst.readBack(out.data());
-            std::fprintf(stderr, "quadtri: evaluated on Vulkan device %s\n", ctx.deviceName().c_str());
-            return out;
+            return evaluateLevelsOnVulkan(refiner, level, control);
         } catch (const VulkanError& e) {
             std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); using the CPU evaluator\n", e.what());
         }
         kind = EvaluatorKind::Cpu;
     }
-    if (kind == EvaluatorKind::Tbb)
-        TbbEvaluator::EvalStencils(control.data(), d, out.data(), d, table);
-    else
-        CpuEvaluator::EvalStencils(control.data(), d, out.data(), d, table);
-    return out;
+    const BufferDescriptor d(0, 3, 3);
+    std::vector<float> previous = control, next;
+    for (int L = 1; L <= level; ++L) {
+        const StencilTable& table = refiner.levelStencils(L);
+        next.assign(std::size_t(table.numStencils()) * 3, 0.0f);
+        if (kind == EvaluatorKind::Tbb)
+            TbbEvaluator::EvalStencils(previous.data(), d, next.data(), d, table);
+        else
+            CpuEvaluator::EvalStencils(previous.data(), d, next.data(), d, table);
+        previous.swap(next);
+    }
+    return previous;
 }
 
 std::unique_ptr<VulkanContext> openVulkan() {
