@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 
+#include "bench/sphere.h"
 #include "bench/torus.h"
 #include "far/rules.h"
 #include "far/weight_pool.h"
@@ -102,39 +103,23 @@ TEST(StencilTableGuard, RefusesLevelsOverBudgetBeforeAllocating) {
     EXPECT_LE(refiner.estimateLevelBytes(refiner.maxLevel()), options.memoryBudgetBytes);
 }
 
-// A UV sphere whose poles are fans of `segments` triangles, quads between `rings` rings: its
-// factorized stencils near the poles span the whole pole ring, so they grow far faster than the
-// per-level tables.
-struct PoleSphere {
-    std::vector<int> sizes, verts;
-    int numVertices = 0;
-    PoleSphere(int segments, int rings) {
-        numVertices = 2 + segments * (rings - 1);
-        auto at = [&](int r, int s) { return 2 + (r - 1) * segments + s % segments; };
-        for (int s = 0; s < segments; ++s) add({0, at(1, s), at(1, s + 1)});
-        for (int r = 1; r + 1 < rings; ++r)
-            for (int s = 0; s < segments; ++s) add({at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1)});
-        for (int s = 0; s < segments; ++s) add({1, at(rings - 1, s + 1), at(rings - 1, s)});
-    }
-    void add(std::initializer_list<int> face) {
-        sizes.push_back(int(face.size()));
-        verts.insert(verts.end(), face);
-    }
-    TopologyDescriptor descriptor() const {
-        TopologyDescriptor d;
-        d.numVertices = numVertices;
-        d.numFaces = int(sizes.size());
-        d.numVertsPerFace = sizes.data();
-        d.faceVertIndices = verts.data();
-        return d;
-    }
-};
+// The bench's meshes as descriptors (bench/torus.h, bench/sphere.h).
+TopologyDescriptor descriptorOf(const bench::ControlMesh& mesh) {
+    TopologyDescriptor d;
+    d.numVertices = mesh.numVertices;
+    d.numFaces = mesh.numFaces();
+    d.numVertsPerFace = mesh.faceSizes.data();
+    d.faceVertIndices = mesh.faceVerts.data();
+    return d;
+}
 
+// A UV sphere with triangle fans at its poles: its factorized stencils near the poles span the
+// whole pole ring, so they grow far faster than the per-level tables.
 TEST(StencilTableGuard, FactorizedTablesAreBudgeted) {
-    const PoleSphere sphere(400, 6);
+    const bench::ControlMesh sphere = bench::makeUvSphere(400, 6, bench::SpherePoles::TriangleFans);
     Options options;
     options.memoryBudgetBytes = 64 << 20;
-    Refiner refiner(sphere.descriptor(), options);
+    Refiner refiner(descriptorOf(sphere), options);
     ASSERT_NO_THROW(refiner.refineUniform(3));  // per level, 3 levels fit in 64 MiB
     EXPECT_NO_THROW(refiner.factorizedStencils(1));
     try {
@@ -145,7 +130,7 @@ TEST(StencilTableGuard, FactorizedTablesAreBudgeted) {
         EXPECT_NE(std::string(e.what()).find("budget"), std::string::npos) << e.what();
     }
     // Under the default budget it fits, and composes what the per-level tables give.
-    Refiner roomy(sphere.descriptor(), Options());
+    Refiner roomy(descriptorOf(sphere), Options());
     roomy.refineUniform(2);
     const StencilTable factorized = roomy.factorizedStencils(2);
     EXPECT_EQ(factorized.numStencils(), roomy.level(2).numVertices);
@@ -155,8 +140,8 @@ TEST(StencilTableGuard, FactorizedTablesAreBudgeted) {
 // The descriptor's counts are checked against the budget before level 0 is allocated: a count
 // of 2^31 - 1 vertices would be tens of GB of incidence arrays.
 TEST(StencilTableGuard, BaseLevelIsBudgeted) {
-    const PoleSphere sphere(8, 3);
-    TopologyDescriptor d = sphere.descriptor();
+    const bench::ControlMesh sphere = bench::makeUvSphere(8, 3, bench::SpherePoles::TriangleFans);
+    TopologyDescriptor d = descriptorOf(sphere);
     d.numVertices = 2147483647;
     try {
         Refiner refiner(d, Options());
@@ -184,15 +169,6 @@ TEST(StencilTableGuard, EstimateBoundsTheLevel) {
 // The bench's closed n x n tori (bench/torus.h): quads, or every quad split along the same
 // diagonal, so that every vertex is regular (valence 4 or 6) and every level has one mask per
 // kind of point.
-TopologyDescriptor descriptorOf(const bench::ControlMesh& mesh) {
-    TopologyDescriptor d;
-    d.numVertices = mesh.numVertices;
-    d.numFaces = mesh.numFaces();
-    d.numVertsPerFace = mesh.faceSizes.data();
-    d.faceVertIndices = mesh.faceVerts.data();
-    return d;
-}
-
 TEST(WeightSharing, RegularTorusPoolsOneSequencePerMask) {
     struct Case {
         bool triangles;
