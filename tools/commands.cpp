@@ -140,7 +140,6 @@ int runRefine(const RefineArgs& args) {
     const Options options = makeOptions(args.mesh, mesh);
     Refiner refiner = makeRefiner(mesh, options);
     refiner.refineUniform(args.level);
-    StencilTable table;
     std::vector<float> positions =
         args.level > 0 ? evaluateLevels(args.evaluator, refiner, args.level, mesh.positions) : mesh.positions;
     checkFinite(positions, mesh, args.level, options.scheme);
