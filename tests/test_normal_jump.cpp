@@ -9,10 +9,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
+#include <utility>
 #include <tuple>
 #include <vector>
 
+#include "tests/osd_reference.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -137,6 +140,77 @@ const Rising kRising[] = {
 // same way at level 5 (its three-quad sector: 0.580), and catmark-butterfly with the others at
 // level 4. The levels before the fold still follow the 1° rule.
 int levelsBeforeFold(const std::string& mesh) { return mesh == "osd/catmark_rook.obj" ? 3 : kMaxLevel; }
+
+// Largest jump across the smooth edges of the faces with a corner within `radius` of `centre`,
+// for any face list (ours or OpenSubdiv's); `sharpness` gives each edge's by its sorted ends.
+double localSmoothJump(const std::vector<int>& faceOffsets, const std::vector<int>& faceVerts,
+                       const std::vector<float>& xyz, const std::map<std::pair<int, int>, float>& sharpness,
+                       const float centre[3], double radius) {
+    auto near = [&](int v) {
+        double d = 0;
+        for (int k = 0; k < 3; ++k) d += std::pow(double(xyz[3 * size_t(v) + k]) - centre[k], 2);
+        return d <= radius * radius;
+    };
+    std::map<std::pair<int, int>, std::vector<int>> edgeFaces;
+    for (size_t f = 0; f + 1 < faceOffsets.size(); ++f) {
+        const int b = faceOffsets[f], n = faceOffsets[f + 1] - b;
+        if (std::none_of(faceVerts.begin() + b, faceVerts.begin() + b + n, near)) continue;
+        for (int i = 0; i < n; ++i) {
+            const int a = faceVerts[size_t(b + i)], c = faceVerts[size_t(b + (i + 1) % n)];
+            edgeFaces[{std::min(a, c), std::max(a, c)}].push_back(int(f));
+        }
+    }
+    double worst = 0;
+    for (const auto& [edge, faces] : edgeFaces) {
+        const auto s = sharpness.find(edge);
+        if (faces.size() != 2 || (s != sharpness.end() && s->second > 0.0f)) continue;
+        double a[3], b[3];
+        if (polygonNormal(faceVerts.data() + faceOffsets[size_t(faces[0])], faceOffsets[size_t(faces[0]) + 1] - faceOffsets[size_t(faces[0])], xyz, a) &&
+            polygonNormal(faceVerts.data() + faceOffsets[size_t(faces[1])], faceOffsets[size_t(faces[1]) + 1] - faceOffsets[size_t(faces[1])], xyz, b))
+            worst = std::max(worst, angleBetween(a, b));
+    }
+    return worst;
+}
+
+std::map<std::pair<int, int>, float> sharpnessByEnds(const std::vector<int>& edgeVerts, const std::vector<float>& sharpness) {
+    std::map<std::pair<int, int>, float> byEnds;
+    for (size_t e = 0; e < sharpness.size(); ++e)
+        byEnds[{std::min(edgeVerts[2 * e], edgeVerts[2 * e + 1]), std::max(edgeVerts[2 * e], edgeVerts[2 * e + 1])}] =
+            sharpness[e];
+    return byEnds;
+}
+
+// The exception above, checked: next to the rook's concave corner (vertex 653) OpenSubdiv's own
+// Catmark folds at level 5, Stam-Loop (equal to it on pure quads) at level 4, and neither before.
+TEST(NormalJump, TheRooksConcaveCornerFoldsUnderOpenSubdivToo) {
+    const char* rook = "osd/catmark_rook.obj";
+    const RefinedMesh ours = refineMesh(rook, 5, [] {
+        Options o;
+        o.scheme = Scheme::StamLoop;
+        return o;
+    }());
+    const float corner[3] = {3.07f, -1.84f, 0.63f};
+    const io::ObjMesh& mesh = ours.mesh;
+    ASSERT_LT(std::abs(mesh.positions[3 * 653] - corner[0]) + std::abs(mesh.positions[3 * 653 + 1] - corner[1]) +
+                  std::abs(mesh.positions[3 * 653 + 2] - corner[2]),
+              0.01f);
+    const OsdRefinement osd = osdRefine(mesh, OsdScheme::Catmark, ours.options.boundary, ours.options.creaseMethod, 5);
+    std::vector<double> jumpOurs, jumpOsd;  // per level, from 0
+    for (int L = 0; L <= 5; ++L) {
+        const Topology& t = ours.refiner->level(L);
+        const OsdLevelTopology& o = osd.topology[size_t(L)];
+        jumpOurs.push_back(localSmoothJump(t.faceOffsets, t.faceVerts, ours.positions[size_t(L)],
+                                           sharpnessByEnds(t.edgeVerts, t.edgeSharpness), corner, 0.06));
+        jumpOsd.push_back(localSmoothJump(o.faceOffsets, o.faceVerts, osd.positions[size_t(L)],
+                                          sharpnessByEnds(o.edgeVerts, o.edgeSharpness), corner, 0.06));
+    }
+    print("rook near vertex 653, stam-loop smooth", jumpOurs);
+    print("rook near vertex 653, OpenSubdiv Catmark smooth", jumpOsd);
+    for (int L = 1; L <= 3; ++L) EXPECT_LT(jumpOurs[size_t(L)], 30.0) << "stam-loop folds before level 4: " << L;
+    EXPECT_GT(jumpOurs[4], 170.0) << "stam-loop no longer folds at level 4: tighten levelsBeforeFold";
+    for (int L = 1; L <= 4; ++L) EXPECT_LT(jumpOsd[size_t(L)], 30.0) << "OpenSubdiv folds before level 5: " << L;
+    EXPECT_GT(jumpOsd[5], 170.0) << "OpenSubdiv does not fold at level 5";
+}
 
 const Rising* risingOf(const std::string& mesh, Scheme scheme) {
     for (const Rising& r : kRising)
