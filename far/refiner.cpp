@@ -43,14 +43,18 @@ std::size_t Refiner::estimateLevelBytes(int L) const {
                 ++corners[std::size_t(p.faceVerts[i])];
                 touchesQuad[std::size_t(p.faceVerts[i])] |= p.faceSize(f) != 3;
             }
-        auto extraordinary = [&](int v, std::size_t k) { return !touchesQuad[std::size_t(v)] && k != 6; };
+        auto extraordinary = [&](int v, std::size_t k) { return !touchesQuad[std::size_t(v)] && k >= 3 && k != 6; };
         if (p.vertEdgeOffsets.size() == std::size_t(p.numVertices) + 1) {
-            // Zorin's rule applies where both ends have triangles only.
+            // Zorin's rule applies where both ends have triangles only, at an end whose faces
+            // close a manifold fan.
             for (int e = 0; e < p.numEdges(); ++e) {
                 const int a = p.edgeVerts[2 * e], b = p.edgeVerts[2 * e + 1];
                 if (touchesQuad[std::size_t(a)] || touchesQuad[std::size_t(b)]) continue;
-                for (int v : {a, b})
-                    if (extraordinary(v, std::size_t(p.vertexEdgeCount(v)))) entries += std::size_t(p.vertexEdgeCount(v)) + 1;
+                for (int v : {a, b}) {
+                    const std::size_t k = std::size_t(p.vertexEdgeCount(v));
+                    if (!(p.vertFlags[std::size_t(v)] & (kVertexBoundary | kVertexNonManifold)) && extraordinary(v, k))
+                        entries += k + 1;
+                }
             }
         } else {
             // Faces only: a vertex has at most one edge more than it has corners.

@@ -137,6 +137,40 @@ TEST(StencilTableGuard, FactorizedTablesAreBudgeted) {
     EXPECT_LE(factorized.bytes() + roomy.bytes(), Options().memoryBudgetBytes);
 }
 
+// `pages` triangles sharing the edge 0-1, each with its own third vertex.
+struct LocalBook {
+    std::vector<int> sizes, verts;
+    int numVertices;
+    explicit LocalBook(int pages) : sizes(size_t(pages), 3), numVertices(pages + 2) {
+        for (int i = 0; i < pages; ++i) verts.insert(verts.end(), {0, 1, i + 2});
+    }
+    TopologyDescriptor descriptor() const {
+        TopologyDescriptor d;
+        d.numVertices = numVertices;
+        d.numFaces = int(sizes.size());
+        d.numVertsPerFace = sizes.data();
+        d.faceVertIndices = verts.data();
+        return d;
+    }
+};
+
+// Nor may it overshoot by far, or it refuses what fits: catmark-butterfly's Zorin masks read
+// whole rings only at manifold, triangle-only ends, so a book of 2000 triangles on one edge (its
+// spine ends have valence 2001 but are non-manifold) must not be charged K² entries.
+TEST(StencilTableGuard, EstimateStaysNearTheLevel) {
+    LocalBook book(2000);
+    for (Scheme scheme : {Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly}) {
+        Options options;
+        options.scheme = scheme;
+        Refiner refiner(book.descriptor(), options);
+        const std::size_t estimate = refiner.estimateLevelBytes(1);
+        refiner.refineUniform(1, TopologyDetail::Full);
+        const std::size_t real = refiner.bytes() - bytesOf(refiner.level(0));
+        EXPECT_GE(estimate, real) << toString(scheme);
+        EXPECT_LE(estimate, 8 * real) << toString(scheme);
+    }
+}
+
 // The descriptor's counts are checked against the budget before level 0 is allocated: a count
 // of 2^31 - 1 vertices would be tens of GB of incidence arrays.
 TEST(StencilTableGuard, BaseLevelIsBudgeted) {
