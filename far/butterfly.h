@@ -1,7 +1,7 @@
-// Catmull-Clark on quads, Butterfly on triangles (Boumzaid et al., seed 001; DESIGN.md §5;
-// derivation and choices in docs/catmark_butterfly/). The quad side is Catmull-Clark and comes
-// from the Stam-Loop masks, which equal it wherever no triangle is involved; this class builds
-// every mask that touches a triangle:
+// Catmull-Clark on quads, Butterfly on triangles (Boumzaid, Lanquetin, Neveu and Destelle 2011;
+// derivation and choices in docs/catmark_butterfly/README.md). The quad side is Catmull-Clark and
+// comes from the Stam-Loop masks, which equal it wherever no triangle is involved; this class
+// builds every mask that touches a triangle:
 //   - vertices with triangles only never move (interpolation), whatever their rule;
 //   - edges between two triangles: Butterfly (½, ½, ⅛, ⅛, −1/16 × 4), Zorin's modified rule at
 //     interior extraordinary endpoints, the seam rules of eqs. 11/12 (seam → column 1) and the

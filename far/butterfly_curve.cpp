@@ -3,9 +3,10 @@
 // surfaces sharing it join without a crack), as a univariate scheme: the 4-point rule between
 // interpolated points (triangle side), the cubic B-spline between approximated ones (quad side
 // and seam), and in between the rule that reproduces cubics under the curve quasi-interpolant
-// (Q⁻f = f − f''/6 at approximated points, Q⁺f = f at interpolated ones): the method of seed 001
-// §3.2, solved here on the points at hand (docs/catmark_butterfly/derive_seam_rules.py prints the
-// same systems in exact rationals and checks that every pattern of point kinds is solvable).
+// (Q⁻f = f − f''/6 at approximated points, Q⁺f = f at interpolated ones): the method of the
+// paper's §3.2 (docs/catmark_butterfly/README.md, §3), solved here on the points at hand
+// (docs/catmark_butterfly/derive_seam_rules.py prints the same systems in exact rationals and
+// checks that every pattern of point kinds is solvable).
 #include <cmath>
 #include <utility>
 

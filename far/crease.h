@@ -1,5 +1,6 @@
 // DeRose semi-sharp creases as OpenSubdiv applies them: sharpness decay and vertex rules
-// (DESIGN.md §6). Sharpness is float, as in OpenSubdiv, so decayed values match it bit for bit.
+// (docs/schemes/creases.md). Sharpness is float, as in OpenSubdiv, so decayed values match it
+// bit for bit.
 #pragma once
 
 #include "far/options.h"

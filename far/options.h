@@ -12,7 +12,7 @@ enum class Scheme {
     Bilinear,  // linear subdivision only: corners stay, edge midpoints, face centroids
     StamLoop,  // Stam-Loop quad/triangle: Catmull-Clark on quads, Loop on triangles, corrected mixed vertices
     SchaeferWarren,  // Stam-Loop plus unzipping of the tri/quad network: C2 across the ordinary seam
-    CatmarkButterfly,  // Catmull-Clark on quads, interpolating Butterfly on triangles, seed 001's seam rules
+    CatmarkButterfly,  // Catmull-Clark on quads, interpolating Butterfly on triangles (docs/catmark_butterfly/)
 };
 
 enum class BoundaryInterpolation {

@@ -1,5 +1,6 @@
 // Uniform refinement of one level's topology: triangles split in 4, quads and n-gons into
-// quads around their centroid. Child sharpness decays from the parent (DESIGN.md §6).
+// quads around their centroid. Child sharpness decays from the parent (docs/schemes/creases.md,
+// §2).
 #pragma once
 
 #include <vector>

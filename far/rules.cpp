@@ -1,4 +1,5 @@
-// Stam-Loop quad/triangle rules (DESIGN.md §2, §2.1, §3) with DeRose creases (§6), written as
+// Stam-Loop quad/triangle rules (docs/schemes/stam_loop.md) with DeRose creases
+// (docs/schemes/creases.md), written as
 // one-pass masks over the parent level. Each mask below is the two-pass form (linear split,
 // averaging with α = 1/(1 + nE/2 + nQ/4), β = α/2, γ = α/4, then the η correction) expanded
 // over parent vertices:

@@ -11,7 +11,7 @@
 namespace quadtri {
 
 // η of the Stam-Loop correction v2 = v1 + η (v1 - v0) for a smooth vertex with nE incident
-// edges, nQ quad-like and nT triangular faces (DESIGN.md §2.1).
+// edges, nQ quad-like and nT triangular faces (docs/schemes/stam_loop.md, §3).
 double stamLoopEta(int nE, int nQ, int nT);
 
 // Masks of the child vertices of `parent`, in the child order of `numbering`.

@@ -1,8 +1,8 @@
-// Schaefer-Warren's smooth rules (DESIGN.md §4): unzip the tri/quad network, subdivide each
-// piece linearly, then average typed centroids (a quad's centroid from quad copies, a triangle's
-// ¼ x + ⅜ (other corners) from triangle copies) weighted by the angle each face spans in the
-// ordinary layout (π/2, π/3). Old vertices are corrected as in Stam-Loop with v0 the pre-unzip
-// position, so that away from the network the masks equal Stam-Loop's exactly.
+// Schaefer-Warren's smooth rules (docs/schemes/schaefer_warren.md): unzip the tri/quad network,
+// subdivide each piece linearly, then average typed centroids (a quad's centroid from quad copies,
+// a triangle's ¼ x + ⅜ (other corners) from triangle copies) weighted by the angle each face spans
+// in the ordinary layout (π/2, π/3). Old vertices are corrected as in Stam-Loop with v0 the
+// pre-unzip position, so that away from the network the masks equal Stam-Loop's exactly.
 #pragma once
 
 #include "far/sparse_accumulator.h"

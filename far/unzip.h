@@ -1,6 +1,6 @@
-// Schaefer-Warren unzipping (DESIGN.md §4): before each round, a vertex on the tri/quad network
-// gets one copy for the triangle side and one for the quad side, so that each piece is
-// subdivided on its own and the averaging pass zips the seam closed, C2 across it.
+// Schaefer-Warren unzipping (docs/schemes/schaefer_warren.md, §1): before each round, a vertex on
+// the tri/quad network gets one copy for the triangle side and one for the quad side, so that each
+// piece is subdivided on its own and the averaging pass zips the seam closed, C2 across it.
 #pragma once
 
 #include "far/stencil_table.h"

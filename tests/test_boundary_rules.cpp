@@ -160,7 +160,7 @@ TEST(Rules, UnusedVertexStaysPut) {
     EXPECT_LE(maxAbsDifference(w, expected.w), kWeightTol) << describe(w);
 }
 
-// ---- Semi-sharp edges (DESIGN.md 6) -----------------------------------------------------------
+// ---- Semi-sharp edges (docs/schemes/creases.md, §2) -------------------------------------------
 
 // 4 x 4 quad grid; the middle row's edges (1,2)-(2,2), (2,2)-(3,2), (3,2)-(4,2) get sharpness
 // side, s, side. The edge point of (2,2)-(3,2) is the crease midpoint while both of its child

@@ -1,6 +1,6 @@
-// catmark-butterfly (far/butterfly.*, DESIGN.md §5, docs/catmark_butterfly/): Butterfly on pure
+// catmark-butterfly (far/butterfly.*, docs/catmark_butterfly/README.md): Butterfly on pure
 // triangles (interpolation, the regular, Zorin and 4-point masks, vertex counts), the seam masks
-// of seed 001 read back from the analyzer, quadratic generation across the seam, and the
+// of the paper read back from the analyzer, quadratic generation across the seam, and the
 // irregular-seam choices on every mixed mesh (unit sums, interpolation, shrinking normal jumps).
 //
 // Every expected weight is a closed form from the papers or an exact rational printed by

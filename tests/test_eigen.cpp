@@ -6,8 +6,8 @@
 // q_j -> face point of quad j. S (1 + nE + nQ square) holds the analyzer's weights of those
 // level-1 vertices over the level-0 local vertices; any weight outside the set fails the test.
 //
-// Checks: Catmull-Clark's and Loop's subdominant eigenvalues in closed form, the ordinary
-// seam's spectrum, and DESIGN.md 2.1's eta table reproduced from the eigen-criterion
+// Checks: Catmull-Clark's and Loop's subdominant eigenvalues in closed form, the ordinary seam's
+// spectrum, and the eta table (docs/schemes/stam_loop.md, §3) reproduced from the eigen-criterion
 // (subsubdominant eigenvalue = lambda_1^2, or a zero eigenvalue for (3,1) and (3,2)).
 
 #include <gtest/gtest.h>
@@ -151,9 +151,9 @@ std::string show(const std::vector<std::complex<double>>& v) {
     return s;
 }
 
-// DESIGN.md 2's averaged (uncorrected) vertex v1 of the centre, expanded over the level-0 local
-// vertices: alpha c + beta sum m_i + gamma sum F_j with m_i = (c + p_i)/2, F_j the quad
-// centroids, alpha = 1/(1 + nE/2 + nQ/4), beta = alpha/2, gamma = alpha/4.
+// The averaged (uncorrected) vertex v1 of the centre (docs/schemes/stam_loop.md, §1), expanded over
+// the level-0 local vertices: alpha c + beta sum m_i + gamma sum F_j with m_i = (c + p_i)/2, F_j
+// the quad centroids, alpha = 1/(1 + nE/2 + nQ/4), beta = alpha/2, gamma = alpha/4.
 Eigen::VectorXd averagedCentre(const std::string& ring) {
     const int nE = int(ring.size());
     const int nQ = int(std::count(ring.begin(), ring.end(), 'Q'));
@@ -242,7 +242,8 @@ TEST(EigenLoop, SubdominantEigenvalue) {
     }
 }
 
-// The ordinary seam vertex (two quads, three triangles): DESIGN.md 7's 1, 1/2, 1/2, 1/4, 1/4, 1/4.
+// The ordinary seam vertex (two quads, three triangles): 1, 1/2, 1/2, 1/4, 1/4, 1/4
+// (docs/schemes/stam_loop.md, §4).
 TEST(EigenSeam, OrdinarySeamSpectrum) {
     const LocalMatrix m = buildLocalMatrix("QQTTT");
     EXPECT_LE(m.outside, 1e-7);
@@ -259,7 +260,7 @@ TEST(EigenSeam, OrdinarySeamSpectrum) {
 struct EtaCase {
     const char* ring;  // quads first, then triangles (the (4,2) table value is for adjacent quads)
     int nE, nQ;
-    double eta;  // DESIGN.md 2.1
+    double eta;  // docs/schemes/stam_loop.md, §3
     bool zeroCriterion;
 };
 
@@ -269,7 +270,7 @@ const EtaCase kEtaTable[] = {
 };
 
 // Reads eta back from the analyzer's centre row r = (1 + eta) v1 - eta e_c, with v1 the
-// averaged vertex of DESIGN.md 2: eta = (r_c - v1_c) / (v1_c - 1).
+// averaged vertex of docs/schemes/stam_loop.md, §1: eta = (r_c - v1_c) / (v1_c - 1).
 double readEta(const LocalMatrix& m) {
     const Eigen::VectorXd v1 = averagedCentre(m.ring);
     return (m.S(0, 0) - v1[0]) / (v1[0] - 1.0);
@@ -386,7 +387,7 @@ TEST(EigenEta, TableReproducedByEigenAnalysis) {
 }
 
 // The (4,2) value belongs to the arrangement with the two quads adjacent: with alternating quads
-// (QTQT) the criterion's root is elsewhere (DESIGN.md lists one value per (nE, nQ)).
+// (QTQT) the criterion's root is elsewhere (the table has one value per (nE, nQ)).
 TEST(EigenEta, AlternatingFourTwoIsADifferentConfiguration) {
     const LocalMatrix adjacent = buildLocalMatrix("QQTT");
     const LocalMatrix alternating = buildLocalMatrix("QTQT");

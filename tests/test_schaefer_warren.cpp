@@ -1,7 +1,7 @@
-// Schaefer-Warren (DESIGN.md §4, §7): the unzip masks read back from the analyzer, quadratic
-// generation across the ordinary tri/quad seam (which tells it from Stam-Loop), curvature
-// continuity across the seam of a refined torus, robustness on every mixed mesh, and equality
-// with Stam-Loop wherever there is no seam.
+// Schaefer-Warren (docs/schemes/schaefer_warren.md): the unzip masks read back from the analyzer,
+// quadratic generation across the ordinary tri/quad seam (which tells it from Stam-Loop), curvature
+// continuity across the seam of a refined torus, robustness on every mixed mesh, and equality with
+// Stam-Loop wherever there is no seam.
 //
 // Every expected value below is derived in closed form in the comments; none is read off the
 // analyzer's output.
@@ -67,8 +67,8 @@ std::string describe(const std::map<int, double>& w) {
 
 // The tri/quad network straight from the face lists: an edge with exactly two faces, one a
 // triangle and the other with four or more corners, whose sharpness is below 10 (infinitely
-// sharp edges are never unzipped, DESIGN.md §4). Returns, per vertex, the far ends of its
-// network edges.
+// sharp edges are never unzipped, docs/schemes/schaefer_warren.md, §1). Returns, per vertex, the
+// far ends of its network edges.
 std::vector<std::vector<int>> networkNeighbours(int numVertices, const std::vector<int>& faceSizes,
                                                 const std::vector<int>& faceVerts,
                                                 const std::vector<int>& creasePairs = {},
@@ -99,7 +99,7 @@ std::vector<std::vector<int>> networkNeighbours(int numVertices, const std::vect
     return out;
 }
 
-// DESIGN.md §4: v_t = v + (1/48) Σ_k (w_k − v), v_q = v − (1/48) Σ_k (w_k − v).
+// v_t = v + (1/48) Σ_k (w_k − v), v_q = v − (1/48) Σ_k (w_k − v) (docs/schemes/schaefer_warren.md).
 std::map<int, double> expectedCopy(int v, const std::vector<int>& network, Piece piece) {
     const double sign = piece == Piece::Triangle ? 1.0 : -1.0;
     std::map<int, double> w;
@@ -276,7 +276,7 @@ TEST(Unzip, InfinitelySharpSeamEdgesAreNotInTheNetwork) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// 2. Quadratic generation at the seam (DESIGN.md §7).
+// 2. Quadratic generation at the seam (docs/schemes/schaefer_warren.md, §4).
 //
 // Derivation of the constants. For a box spline M with direction set Ξ (centred), and a
 // quadratic f, Σ_j f(j) M(x − j) = f(x) + ½ tr(H Σ), H the Hessian of f and

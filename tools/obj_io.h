@@ -1,5 +1,5 @@
 // Wavefront OBJ with OpenSubdiv's tags (`t crease`, `t corner`, `t hole`, `t interpolateboundary`,
-// `t creasemethod`), as described in shared/meshes/README.md.
+// `t creasemethod`), as described in tests/meshes/README.md.
 #pragma once
 
 #include <functional>

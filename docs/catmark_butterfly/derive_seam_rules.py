@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Derives the catmark-butterfly rules next to the tri/quad seam (DESIGN.md section 5) by the
-method of Boumzaid et al. (seed 001): solve  S Q f = Q sigma f  for the monomials of degree <= m
+"""Derives the catmark-butterfly rules next to the tri/quad seam (docs/catmark_butterfly/README.md)
+by the method of Boumzaid, Lanquetin, Neveu and Destelle, "An approximating-interpolatory
+subdivision scheme" (2011): solve  S Q f = Q sigma f  for the monomials of degree <= m
 on a fixed support, in exact rationals (fractions.Fraction, Gaussian elimination).
 
 Surface (m = 2): coordinates of tests/meshes/mixed/split_plane.obj: quads on Z^2 for x <= 0,
@@ -90,8 +91,10 @@ def derive(name, support, target, equal=(), zero=()):
     return w
 
 def expect(weights, design):
-    """The weights DESIGN.md §5 states (and far/butterfly.cpp uses) must be the ones derived."""
-    assert list(weights) == design, f"derived {[str(w) for w in weights]}, DESIGN.md says {[str(w) for w in design]}"
+    """The weights docs/catmark_butterfly/README.md states (and far/butterfly.cpp uses) must be the
+    ones derived."""
+    assert list(weights) == design, (f"derived {[str(w) for w in weights]}, "
+                                     f"docs/catmark_butterfly/README.md states {[str(w) for w in design]}")
 
 def check(name, support, weights, target):
     """Prints the error of a given rule on each monomial (0 = reproduced exactly)."""
