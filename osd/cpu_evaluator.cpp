@@ -7,7 +7,9 @@ namespace quadtri {
 
 void CpuEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
                                 const BufferDescriptor& dstDesc, const StencilTable& table, int start, int end) {
-    if (!detail::checkEvalArguments(src, srcDesc, dst, dstDesc, table, start, end)) return;
+    if (!detail::checkEvalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numStencils(), start,
+                                    end))
+        return;
     kernels::evalStencils(src + srcDesc.offset, srcDesc.stride, dst + dstDesc.offset, dstDesc.stride, dstDesc.length,
                           detail::stencilArrays(table), start, end);
 }

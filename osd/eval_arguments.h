@@ -1,5 +1,6 @@
-// Argument checking shared by the evaluators' EvalStencils (CpuEvaluator, TbbEvaluator), so that
-// every evaluator accepts and rejects exactly the same calls.
+// Argument checking shared by every evaluator's EvalStencils (CpuEvaluator, TbbEvaluator,
+// VulkanEvaluator), so that all of them accept and reject exactly the same calls with the same
+// messages.
 #pragma once
 
 #include "far/stencil_table.h"
@@ -8,12 +9,14 @@
 
 namespace quadtri::detail {
 
-// Checks the arguments of an EvalStencils call and resolves end < 0 to table.numStencils().
-// Throws std::invalid_argument on an invalid descriptor, differing source and destination
-// lengths, a range outside [0, table.numStencils()] or start > end, and (only when the range is
-// not empty) a null buffer. Returns false when [start, end) is empty: nothing to evaluate.
-bool checkEvalArguments(const float* src, const BufferDescriptor& srcDesc, const float* dst,
-                        const BufferDescriptor& dstDesc, const StencilTable& table, int start, int& end);
+// Checks the arguments of an EvalStencils call over a table of `numStencils` stencils and
+// resolves end < 0 to numStencils. srcPresent / dstPresent say whether the caller passed a
+// buffer (a non-null pointer on the host, a non-null VkBuffer on a device). Throws
+// std::invalid_argument on an invalid descriptor, differing source and destination lengths, a
+// range outside [0, numStencils] or start > end, and (only when the range is not empty) a
+// missing buffer. Returns false when [start, end) is empty: nothing to evaluate.
+bool checkEvalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
+                        const BufferDescriptor& dstDesc, int numStencils, int start, int& end);
 
 // The table's arrays as the kernel reads them.
 inline kernels::StencilArrays stencilArrays(const StencilTable& table) {

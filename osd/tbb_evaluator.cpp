@@ -21,7 +21,9 @@ constexpr int kGrain = 2048;
 
 void TbbEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
                                 const BufferDescriptor& dstDesc, const StencilTable& table, int start, int end) {
-    if (!detail::checkEvalArguments(src, srcDesc, dst, dstDesc, table, start, end)) return;
+    if (!detail::checkEvalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numStencils(), start,
+                                    end))
+        return;
     const kernels::StencilArrays arrays = detail::stencilArrays(table);
     const float* s = src + srcDesc.offset;
     float* d = dst + dstDesc.offset;

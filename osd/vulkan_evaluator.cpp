@@ -6,30 +6,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "osd/eval_arguments.h"
+
 namespace quadtri {
 
 namespace {
 
 constexpr uint32_t kSetsPerPool = 64;
 constexpr uint32_t kBindings = 6;
-
-// CpuEvaluator's checks (osd/eval_arguments.cpp) over a device table; resolves end < 0.
-// Returns false when [start, end) is empty.
-bool checkArguments(bool srcValid, const BufferDescriptor& srcDesc, bool dstValid, const BufferDescriptor& dstDesc,
-                    int numStencils, int start, int& end) {
-    if (end < 0) end = numStencils;
-    if (!srcDesc.isValid() || !dstDesc.isValid())
-        throw std::invalid_argument("EvalStencils: invalid BufferDescriptor (need length > 0, stride >= length, offset >= 0)");
-    if (srcDesc.length != dstDesc.length)
-        throw std::invalid_argument("EvalStencils: source length " + std::to_string(srcDesc.length) +
-                                    " differs from destination length " + std::to_string(dstDesc.length));
-    if (start < 0 || start > end || end > numStencils)
-        throw std::invalid_argument("EvalStencils: range [" + std::to_string(start) + ", " + std::to_string(end) +
-                                    ") outside the table's " + std::to_string(numStencils) + " stencils");
-    if (start == end) return false;
-    if (!srcValid || !dstValid) throw std::invalid_argument("EvalStencils: null buffer");
-    return true;
-}
 
 // Floats needed to hold `count` elements of `d` (0 when count is 0).
 std::size_t floatsNeeded(const BufferDescriptor& d, int count) {
@@ -91,8 +75,8 @@ void VulkanEvaluator::resetDescriptorSets() { reset(recorded_); }
 void VulkanEvaluator::record(VkCommandBuffer cmd, DescriptorArena& arena, const VulkanBufferRef& src,
                              const BufferDescriptor& srcDesc, const VulkanBufferRef& dst,
                              const BufferDescriptor& dstDesc, const VulkanStencilTable& table, int start, int end) {
-    if (!checkArguments(src.buffer != VK_NULL_HANDLE, srcDesc, dst.buffer != VK_NULL_HANDLE, dstDesc,
-                        table.numStencils(), start, end))
+    if (!detail::checkEvalArguments(src.buffer != VK_NULL_HANDLE, srcDesc, dst.buffer != VK_NULL_HANDLE, dstDesc,
+                                    table.numStencils(), start, end))
         return;
     if (!cmd) throw std::invalid_argument("EvalStencils: null command buffer");
     if (table.device() != ctx_.device())
@@ -156,7 +140,7 @@ void VulkanEvaluator::EvalStencils(VkCommandBuffer cmd, const VulkanVertexBuffer
                                    const BufferDescriptor& dstDesc, const VulkanStencilTable& table, int start,
                                    int end) {
     int last = end;
-    if (!checkArguments(true, srcDesc, true, dstDesc, table.numStencils(), start, last)) return;
+    if (!detail::checkEvalArguments(true, srcDesc, true, dstDesc, table.numStencils(), start, last)) return;
     checkFits("source", src, srcDesc, table.numSourceVertices());
     checkFits("destination", dst, dstDesc, last);
     record(cmd, recorded_, {src.buffer(), 0}, srcDesc, {dst.buffer(), 0}, dstDesc, table, start, end);
@@ -166,7 +150,7 @@ void VulkanEvaluator::EvalStencilsAndWait(const VulkanVertexBuffer& src, const B
                                           const VulkanVertexBuffer& dst, const BufferDescriptor& dstDesc,
                                           const VulkanStencilTable& table, int start, int end) {
     int last = end;
-    if (!checkArguments(true, srcDesc, true, dstDesc, table.numStencils(), start, last)) return;
+    if (!detail::checkEvalArguments(true, srcDesc, true, dstDesc, table.numStencils(), start, last)) return;
     checkFits("source", src, srcDesc, table.numSourceVertices());
     checkFits("destination", dst, dstDesc, last);
     try {

@@ -1,15 +1,17 @@
 // VulkanEvaluator (on lavapipe in CI) against CpuEvaluator on every test mesh: per-level tables
 // through one buffer holding all levels, factorized tables, widths 3 and 4 and a width-7 primvar
-// with stride 8; ranges; argument checks. The Khronos validation layer must stay silent.
+// with stride 8; ranges; argument checks, the same as CpuEvaluator's and TbbEvaluator's. The Khronos validation layer must stay silent.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "osd/cpu_evaluator.h"
+#include "osd/tbb_evaluator.h"
 #include "osd/vulkan_evaluator.h"
 #include "tests/test_support.h"
 #include "tests/vulkan_test_support.h"
@@ -156,6 +158,75 @@ TEST_F(VulkanTest, RejectsBadArguments) {
     std::vector<float> out(dst.numFloats());
     dst.readBack(out.data());
     EXPECT_EQ(out[0], 0.0f);  // create() zero-fills; sources are zero
+}
+
+// One EvalStencils call on the 3-stencil hand-checked table, and whether it must be accepted.
+struct Call {
+    const char* what;
+    BufferDescriptor src, dst;
+    int start, end;
+    bool nullSrc, nullDst, accepted;
+};
+
+const Call kCalls[] = {
+    {"stride < length", {0, 3, 2}, {0, 3, 3}, 0, -1, false, false, false},
+    {"negative offset", {0, 3, 3}, {-1, 3, 3}, 0, -1, false, false, false},
+    {"zero length", {0, 0, 0}, {0, 0, 0}, 0, -1, false, false, false},
+    {"negative stride", {0, 3, 3}, {0, 3, -1}, 0, -1, false, false, false},
+    {"length mismatch", {0, 3, 3}, {0, 4, 4}, 0, -1, false, false, false},
+    {"start > end", {0, 3, 3}, {0, 3, 3}, 2, 1, false, false, false},
+    {"end past the table", {0, 3, 3}, {0, 3, 3}, 0, 4, false, false, false},
+    {"negative start", {0, 3, 3}, {0, 3, 3}, -1, 2, false, false, false},
+    {"null source", {0, 3, 3}, {0, 3, 3}, 0, -1, true, false, false},
+    {"null destination", {0, 3, 4}, {1, 3, 4}, 1, 2, false, true, false},
+    {"null buffer, invalid descriptor", {0, 3, 2}, {0, 3, 3}, 0, -1, true, false, false},
+    {"null buffer, range past the table", {0, 3, 3}, {0, 3, 3}, 0, 4, false, true, false},
+    {"null buffers, empty range", {0, 3, 3}, {0, 3, 3}, 1, 1, true, true, true},
+    {"empty range at the end (end < 0)", {0, 3, 3}, {0, 3, 3}, 3, -1, false, false, true},
+    {"every stencil", {1, 4, 4}, {2, 4, 5}, 0, -1, false, false, true},
+    {"a range", {0, 3, 3}, {0, 3, 3}, 1, 3, false, false, true},
+};
+
+// "accepted", or the std::invalid_argument's message.
+template <class Eval>
+std::string outcome(Eval&& eval) {
+    try {
+        eval();
+        return "accepted";
+    } catch (const std::invalid_argument& e) {
+        return std::string("rejected: ") + e.what();
+    }
+}
+
+TEST_F(VulkanTest, SameArgumentChecksAsHostEvaluators) {
+    const StencilTable t = handCheckedTable();
+    VulkanStencilTable table(*ctx, t);
+    VulkanEvaluator evaluator(*ctx);
+    VulkanVertexBuffer src = VulkanVertexBuffer::create(*ctx, 16, 4), dst = VulkanVertexBuffer::create(*ctx, 16, 4);
+    std::vector<float> hostSrc(src.numFloats()), hostDst(dst.numFloats());
+    std::vector<std::string> onDevice;
+    ctx->submitAndWait([&](VkCommandBuffer cmd) {
+        for (const Call& c : kCalls) {
+            const VulkanBufferRef s{c.nullSrc ? VK_NULL_HANDLE : src.buffer(), 0};
+            const VulkanBufferRef d{c.nullDst ? VK_NULL_HANDLE : dst.buffer(), 0};
+            onDevice.push_back(outcome([&] { evaluator.EvalStencils(cmd, s, c.src, d, c.dst, table, c.start, c.end); }));
+        }
+    });
+    evaluator.resetDescriptorSets();
+    for (std::size_t i = 0; i < std::size(kCalls); ++i) {
+        const Call& c = kCalls[i];
+        const float* s = c.nullSrc ? nullptr : hostSrc.data();
+        float* d = c.nullDst ? nullptr : hostDst.data();
+        const std::string cpu = outcome([&] { CpuEvaluator::EvalStencils(s, c.src, d, c.dst, t, c.start, c.end); });
+        const std::string tbb = outcome([&] { TbbEvaluator::EvalStencils(s, c.src, d, c.dst, t, c.start, c.end); });
+        EXPECT_EQ(cpu == "accepted", c.accepted) << c.what << ": " << cpu;
+        EXPECT_EQ(tbb, cpu) << c.what;
+        EXPECT_EQ(onDevice[i], cpu) << c.what;
+        // The VulkanVertexBuffer overloads take no null buffer; the rest must match too.
+        if (c.nullSrc || c.nullDst) continue;
+        EXPECT_EQ(outcome([&] { evaluator.EvalStencilsAndWait(src, c.src, dst, c.dst, table, c.start, c.end); }), cpu)
+            << c.what;
+    }
 }
 
 }  // namespace
