@@ -172,6 +172,7 @@ void VulkanContext::createShared() {
 }
 
 VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStride) {
+    const std::lock_guard<std::mutex> lock(pipelinesMutex_);
     for (const auto& p : pipelines_)
         if (p.length == length && p.srcStride == srcStride && p.dstStride == dstStride) return p.pipeline;
     const int32_t values[4] = {int32_t(workgroupSize_), length, srcStride, dstStride};

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -89,7 +90,8 @@ public:
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
 
     // The stencil shader's layouts, and its pipeline for one (length, srcStride, dstStride),
-    // created on first use and cached.
+    // created on first use and cached. stencilPipeline may be called from several threads at
+    // once (evaluators of one context recording on different threads).
     VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_; }
     VkPipelineLayout pipelineLayout() const { return pipelineLayout_; }
     VkPipeline stencilPipeline(int length, int srcStride, int dstStride);
@@ -125,6 +127,7 @@ private:
         VkPipeline pipeline;
     };
     std::vector<CachedPipeline> pipelines_;
+    std::mutex pipelinesMutex_;  // guards pipelines_
 
     static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                    VkDebugUtilsMessageTypeFlagsEXT types,
