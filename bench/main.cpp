@@ -20,7 +20,13 @@
 #include "bench/report.h"
 #include "bench/sphere.h"
 #include "bench/torus.h"
+#ifdef QUADTRI_BENCH_VULKAN
 #include "bench/vulkan_case.h"
+#else
+namespace quadtri {
+class VulkanContext;  // built without Vulkan: runCase is only ever given none
+}
+#endif
 
 namespace quadtri::bench {
 namespace {
@@ -83,7 +89,7 @@ std::string schemeName(const CaseSpec& spec) {
     return qt + (*spec.osd == OsdScheme::Catmark ? "/catmark" : "/loop");
 }
 
-CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, VulkanContext* vulkan) {
+CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, [[maybe_unused]] VulkanContext* vulkan) {
     CaseResult result;
     result.mesh = mesh.name;
     result.scheme = schemeName(spec);
@@ -106,12 +112,14 @@ CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, Vulk
         std::cerr << "  agree with OpenSubdiv: " << match.describe() << "\n";
     }
     result.quadtri = qt.measure(reps);
+#ifdef QUADTRI_BENCH_VULKAN
     if (vulkan) {
         const VulkanFigures v = measureVulkan(*vulkan, qt.refiner(), mesh.positions, qt.lastLevel(),
                                               1e-5 * mesh.boundingBoxDiagonal(), reps);
         result.quadtri.evalVulkanMs = v.evalMs;
         result.quadtri.uploadVulkanMs = v.uploadMs;
     }
+#endif
     if (osd) result.osd = osd->measure(reps);
     return result;
 }
@@ -146,6 +154,7 @@ int run(int argc, char** argv) {
     result.memcpyGbps1 = memcpyGbps(result.memcpyBytes, 1, 5);
     result.memcpyGbps2 = memcpyGbps(result.memcpyBytes, 2, 5);
 
+#ifdef QUADTRI_BENCH_VULKAN
     std::unique_ptr<VulkanContext> vulkan;
     try {
         vulkan = std::make_unique<VulkanContext>();
@@ -153,6 +162,11 @@ int run(int argc, char** argv) {
     } catch (const VulkanError& e) {
         std::cerr << "no Vulkan timings: " << e.what() << "\n";
     }
+    VulkanContext* device = vulkan.get();
+#else
+    std::cerr << "no Vulkan timings: built with QUADTRI_WITH_VULKAN=OFF\n";
+    VulkanContext* device = nullptr;
+#endif
 
     std::map<std::string, ControlMesh> meshes;
     std::vector<CaseSpec> cases = caseList(quick);
@@ -167,7 +181,7 @@ int run(int argc, char** argv) {
         if (!meshes.count(spec.mesh)) meshes.emplace(spec.mesh, makeMesh(spec.mesh));
         const ControlMesh& mesh = meshes.at(spec.mesh);
         std::cerr << "[" << i + 1 << "/" << cases.size() << "] " << mesh.name << " level " << spec.level << "\n";
-        result.cases.push_back(runCase(mesh, spec, reps, vulkan.get()));
+        result.cases.push_back(runCase(mesh, spec, reps, device));
     }
 
     printMarkdown(std::cout, result);

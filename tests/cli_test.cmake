@@ -1,6 +1,6 @@
 # Runs the quadtri CLI and checks exit codes, messages and outputs.
-#   cmake -DQUADTRI=<exe> -DMESHES=<tests/meshes> -DWORK=<scratch dir> -P cli_test.cmake
-foreach(var QUADTRI MESHES WORK)
+#   cmake -DQUADTRI=<exe> -DVERSION=<project version> -DMESHES=<tests/meshes> -DWORK=<scratch dir> -P cli_test.cmake
+foreach(var QUADTRI VERSION MESHES WORK)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "cli_test.cmake needs -D${var}=...")
   endif()
@@ -52,6 +52,12 @@ set(CYLINDER "${MESHES}/mixed/cylinder_capped.obj")
 # --- success paths ---------------------------------------------------------------------------
 run(0 --help)
 expect_contains("${OUT}" "refine")
+
+# --version alone (no subcommand) prints project(VERSION) from CMakeLists.txt.
+run(0 --version)
+if(NOT OUT STREQUAL "quadtri ${VERSION}\n")
+  message(FATAL_ERROR "${CMD}: expected 'quadtri ${VERSION}', got:\n${OUT}")
+endif()
 
 # cylinder_capped: 34 vertices, 40 faces (24 quads, 16 triangles), 72 edges, closed. Level 1 adds a
 # point per edge and per quad: 34 + 72 + 24 = 130 vertices, 160 faces (96 quads), 288 edges;

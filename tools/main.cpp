@@ -7,6 +7,7 @@
 #include <new>
 
 #include "far/options.h"
+#include "far/version.h"
 #include "tools/byte_size.h"
 #include "tools/commands.h"
 #include "tools/obj_io.h"
@@ -71,6 +72,7 @@ CLI::Option* addLevel(CLI::App& cmd, const char* name, int& level, const char* h
 int main(int argc, char** argv) {
     CLI::App app{"quadtri: quad/triangle subdivision of OBJ meshes", "quadtri"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "quadtri " QUADTRI_VERSION_STRING);
 
     cli::RefineArgs refine;
     CLI::App* refineCmd = app.add_subcommand("refine", "Refine a mesh uniformly and write the last level as OBJ");
@@ -98,7 +100,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) return app.exit(e);  // --help
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
         std::cerr << "quadtri: " << e.what() << "\nRun 'quadtri --help' for usage.\n";
         return 2;
     }
