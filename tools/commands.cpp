@@ -12,7 +12,6 @@
 
 #include "far/refiner.h"
 #include "osd/cpu_evaluator.h"
-#include "osd/vulkan_context.h"
 #include "tools/obj_io.h"
 
 namespace quadtri::cli {
@@ -190,7 +189,7 @@ int runDemo(const DemoArgs& args) {
     if (ec) throw io::ObjError(args.outDir + ": cannot create the output folder (" + ec.message() + ")");
     const std::string stem = std::filesystem::path(args.mesh.input).stem().string();
 
-    const std::unique_ptr<VulkanContext> vulkan = openVulkan();
+    const VulkanTimingPtr vulkan = openVulkanTiming();
     std::printf("| level | vertices | faces | stencils | table bytes | analyzer ms | eval ms | vulkan eval ms |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int L = 1; L <= args.levels; ++L) {

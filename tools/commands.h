@@ -13,7 +13,6 @@
 
 namespace quadtri {
 class Refiner;
-class VulkanContext;
 }
 
 namespace quadtri::cli {
@@ -46,11 +45,21 @@ struct RefineArgs {
 // saying so on stderr.
 std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, int level, const std::vector<float>& control);
 
-// For the demo's Vulkan column: a headless context, or null (saying why on stderr) without a device.
-std::unique_ptr<VulkanContext> openVulkan();
+// The Vulkan side (tools/vulkan_side.cpp, or tools/no_vulkan.cpp in a build without Vulkan).
+// Level `level`'s 3-float positions on a headless Vulkan device, level by level, or nothing
+// without one (saying why on stderr).
+std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner& refiner, int level,
+                                                         const std::vector<float>& control);
+// For the demo's Vulkan column: a headless device to time on, or null (saying why on stderr).
+struct VulkanTiming;
+struct VulkanTimingDeleter {
+    void operator()(VulkanTiming* timing) const;
+};
+using VulkanTimingPtr = std::unique_ptr<VulkanTiming, VulkanTimingDeleter>;
+VulkanTimingPtr openVulkanTiming();
 // Median milliseconds of `runs` Vulkan evaluations of `table` (record, submit, wait on the fence;
 // the table and control vertices are uploaded once beforehand, outside the timing).
-double vulkanEvalMs(VulkanContext& ctx, const StencilTable& table, const std::vector<float>& control, int runs);
+double vulkanEvalMs(VulkanTiming& timing, const StencilTable& table, const std::vector<float>& control, int runs);
 
 struct InfoArgs {
     MeshArgs mesh;

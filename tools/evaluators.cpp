@@ -1,47 +1,18 @@
-// `quadtri refine --evaluator cpu|tbb|vulkan`: the factorized table applied by the chosen evaluator.
-#include <algorithm>
-#include <chrono>
-#include <cstdio>
+// `quadtri refine --evaluator cpu|tbb|vulkan`: the per-level tables applied by the chosen evaluator.
+#include <optional>
+#include <utility>
 
 #include "far/refiner.h"
 #include "osd/cpu_evaluator.h"
 #include "osd/tbb_evaluator.h"
-#include "osd/vulkan_evaluator.h"
 #include "tools/commands.h"
 
 namespace quadtri::cli {
 
-namespace {
-
-// Levels 1..level in one Vulkan buffer, one dispatch per level; the last level read back.
-std::vector<float> evaluateLevelsOnVulkan(const Refiner& refiner, int level, const std::vector<float>& control) {
-    const BufferDescriptor d(0, 3, 3);
-    VulkanContext ctx;
-    std::vector<VulkanStencilTable> tables;
-    tables.reserve(std::size_t(level));
-    for (int L = 1; L <= level; ++L) tables.emplace_back(ctx, refiner.levelStencils(L));
-    std::vector<const VulkanStencilTable*> pointers;
-    for (const VulkanStencilTable& t : tables) pointers.push_back(&t);
-    const std::vector<int> first = VulkanEvaluator::levelFirstElements(pointers);
-    VulkanVertexBuffer all = VulkanVertexBuffer::create(ctx, first.back(), 3);
-    all.updateData(control.data(), 0, refiner.level(0).numVertices);
-    VulkanEvaluator evaluator(ctx);
-    evaluator.EvalLevelsAndWait(all, d, pointers);
-    std::vector<float> everything(std::size_t(first.back()) * 3);
-    all.readBack(everything.data());
-    std::fprintf(stderr, "quadtri: evaluated on Vulkan device %s\n", ctx.deviceName().c_str());
-    return std::vector<float>(everything.begin() + 3 * std::ptrdiff_t(first[std::size_t(level)]), everything.end());
-}
-
-}  // namespace
-
 std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, int level, const std::vector<float>& control) {
     if (kind == EvaluatorKind::Vulkan) {
-        try {
-            return evaluateLevelsOnVulkan(refiner, level, control);
-        } catch (const VulkanError& e) {
-            std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); using the CPU evaluator\n", e.what());
-        }
+        if (std::optional<std::vector<float>> positions = evaluateLevelsOnVulkan(refiner, level, control))
+            return std::move(*positions);
         kind = EvaluatorKind::Cpu;
     }
     const BufferDescriptor d(0, 3, 3);
@@ -56,33 +27,6 @@ std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, in
         previous.swap(next);
     }
     return previous;
-}
-
-std::unique_ptr<VulkanContext> openVulkan() {
-    try {
-        return std::make_unique<VulkanContext>();
-    } catch (const VulkanError& e) {
-        std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); no Vulkan timings\n", e.what());
-        return nullptr;
-    }
-}
-
-double vulkanEvalMs(VulkanContext& ctx, const StencilTable& table, const std::vector<float>& control, int runs) {
-    const BufferDescriptor d(0, 3, 3);
-    VulkanStencilTable gpuTable(ctx, table);
-    VulkanVertexBuffer src = VulkanVertexBuffer::create(ctx, table.numSourceVertices, 3);
-    VulkanVertexBuffer dst = VulkanVertexBuffer::create(ctx, table.numStencils(), 3);
-    src.updateData(control.data(), 0, table.numSourceVertices);
-    VulkanEvaluator evaluator(ctx);
-    evaluator.EvalStencilsAndWait(src, d, dst, d, gpuTable);  // warm-up: pipeline creation
-    std::vector<double> ms;
-    for (int run = 0; run < runs; ++run) {
-        const auto start = std::chrono::steady_clock::now();
-        evaluator.EvalStencilsAndWait(src, d, dst, d, gpuTable);
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
-    std::nth_element(ms.begin(), ms.begin() + runs / 2, ms.end());
-    return ms[runs / 2];
 }
 
 }  // namespace quadtri::cli

@@ -1,0 +1,73 @@
+// The CLI's Vulkan side (built with QUADTRI_WITH_VULKAN; tools/no_vulkan.cpp stands in without
+// it): `refine --evaluator vulkan` and the demo's Vulkan column.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "far/refiner.h"
+#include "osd/vulkan_evaluator.h"
+#include "tools/commands.h"
+
+namespace quadtri::cli {
+
+struct VulkanTiming {
+    VulkanContext ctx;
+};
+
+void VulkanTimingDeleter::operator()(VulkanTiming* timing) const { delete timing; }
+
+// Levels 1..level in one Vulkan buffer, one dispatch per level; the last level read back.
+std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner& refiner, int level,
+                                                         const std::vector<float>& control) {
+    try {
+        const BufferDescriptor d(0, 3, 3);
+        VulkanContext ctx;
+        std::vector<VulkanStencilTable> tables;
+        tables.reserve(std::size_t(level));
+        for (int L = 1; L <= level; ++L) tables.emplace_back(ctx, refiner.levelStencils(L));
+        std::vector<const VulkanStencilTable*> pointers;
+        for (const VulkanStencilTable& t : tables) pointers.push_back(&t);
+        const std::vector<int> first = VulkanEvaluator::levelFirstElements(pointers);
+        VulkanVertexBuffer all = VulkanVertexBuffer::create(ctx, first.back(), 3);
+        all.updateData(control.data(), 0, refiner.level(0).numVertices);
+        VulkanEvaluator evaluator(ctx);
+        evaluator.EvalLevelsAndWait(all, d, pointers);
+        std::vector<float> everything(std::size_t(first.back()) * 3);
+        all.readBack(everything.data());
+        std::fprintf(stderr, "quadtri: evaluated on Vulkan device %s\n", ctx.deviceName().c_str());
+        return std::vector<float>(everything.begin() + 3 * std::ptrdiff_t(first[std::size_t(level)]), everything.end());
+    } catch (const VulkanError& e) {
+        std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); using the CPU evaluator\n", e.what());
+        return std::nullopt;
+    }
+}
+
+VulkanTimingPtr openVulkanTiming() {
+    try {
+        return VulkanTimingPtr(new VulkanTiming{VulkanContext()});
+    } catch (const VulkanError& e) {
+        std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); no Vulkan timings\n", e.what());
+        return nullptr;
+    }
+}
+
+double vulkanEvalMs(VulkanTiming& timing, const StencilTable& table, const std::vector<float>& control, int runs) {
+    VulkanContext& ctx = timing.ctx;
+    const BufferDescriptor d(0, 3, 3);
+    VulkanStencilTable gpuTable(ctx, table);
+    VulkanVertexBuffer src = VulkanVertexBuffer::create(ctx, table.numSourceVertices, 3);
+    VulkanVertexBuffer dst = VulkanVertexBuffer::create(ctx, table.numStencils(), 3);
+    src.updateData(control.data(), 0, table.numSourceVertices);
+    VulkanEvaluator evaluator(ctx);
+    evaluator.EvalStencilsAndWait(src, d, dst, d, gpuTable);  // warm-up: pipeline creation
+    std::vector<double> ms;
+    for (int run = 0; run < runs; ++run) {
+        const auto start = std::chrono::steady_clock::now();
+        evaluator.EvalStencilsAndWait(src, d, dst, d, gpuTable);
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::nth_element(ms.begin(), ms.begin() + runs / 2, ms.end());
+    return ms[runs / 2];
+}
+
+}  // namespace quadtri::cli
