@@ -188,14 +188,7 @@ struct Lattice {
     int n;
     std::vector<float> xyz;
     std::vector<int> sizes, verts;
-    TopologyDescriptor descriptor() const {
-        TopologyDescriptor d;
-        d.numVertices = (n + 1) * (n + 1);
-        d.numFaces = int(sizes.size());
-        d.numVertsPerFace = sizes.data();
-        d.faceVertIndices = verts.data();
-        return d;
-    }
+    TopologyDescriptor descriptor() const { return descriptorOf((n + 1) * (n + 1), sizes, verts); }
 };
 
 Lattice lattice(int n) {
@@ -289,12 +282,7 @@ TEST(ButterflyZorin, ExtraordinaryInteriorEndpoint) {
             sizes.push_back(3);
             verts.insert(verts.end(), {0, 1 + j, 1 + (j + 1) % K});
         }
-        TopologyDescriptor d;
-        d.numVertices = K + 1;
-        d.numFaces = K;
-        d.numVertsPerFace = sizes.data();
-        d.faceVertIndices = verts.data();
-        const Chain c = refineChain(d, xyz, butterflyOptions(), 1);
+        const Chain c = refineChain(descriptorOf(K + 1, sizes, verts), xyz, butterflyOptions(), 1);
         for (int start = 0; start < K; ++start) {
             std::vector<Weight> expected = {{0, 0, 0.75}};
             for (int j = 0; j < K; ++j) {
@@ -313,12 +301,7 @@ TEST(ButterflyZorin, BothEndsExtraordinaryAverage) {
     const std::vector<float> xyz = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
     const std::vector<int> verts = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
     const std::vector<int> sizes(8, 3);
-    TopologyDescriptor d;
-    d.numVertices = 6;
-    d.numFaces = 8;
-    d.numVertsPerFace = sizes.data();
-    d.faceVertIndices = verts.data();
-    const Chain c = refineChain(d, xyz, butterflyOptions(), 1);
+    const Chain c = refineChain(descriptorOf(6, sizes, verts), xyz, butterflyOptions(), 1);
     const std::map<int, double> w = row(c.tables[0], edgePointOf(c, 0, 0, 2));
     const double expected[6] = {9.0 / 16, -1.0 / 16, 9.0 / 16, -1.0 / 16, 0, 0};
     for (int v = 0; v < 6; ++v) EXPECT_NEAR(w.count(v) ? w.at(v) : 0.0, expected[v], 1e-12) << "vertex " << v;
@@ -330,12 +313,7 @@ TEST(ButterflyZorin, BothEndsExtraordinaryAverage) {
 TEST(ButterflyZorin, ValenceTwoTakesThePlainButterfly) {
     const std::vector<float> xyz = {0, 0, 0, 1, 0, 0.2f, 0.3f, 1, -0.4f};
     const std::vector<int> verts = {0, 1, 2, 0, 2, 1}, sizes = {3, 3};
-    TopologyDescriptor d;
-    d.numVertices = 3;
-    d.numFaces = 2;
-    d.numVertsPerFace = sizes.data();
-    d.faceVertIndices = verts.data();
-    const Chain c = refineChain(d, xyz, butterflyOptions(), 2);
+    const Chain c = refineChain(descriptorOf(3, sizes, verts), xyz, butterflyOptions(), 2);
     for (int e = 0; e < 3; ++e) {
         const int a = c.levels[0].edgeVerts[2 * e], b = c.levels[0].edgeVerts[2 * e + 1], opposite = 3 - a - b;
         std::map<int, double> w = row(c.tables[0], c.numbering[0].edgePoint(e));

@@ -105,12 +105,7 @@ TEST(StencilTableGuard, RefusesLevelsOverBudgetBeforeAllocating) {
 
 // The bench's meshes as descriptors (bench/torus.h, bench/sphere.h).
 TopologyDescriptor descriptorOf(const bench::ControlMesh& mesh) {
-    TopologyDescriptor d;
-    d.numVertices = mesh.numVertices;
-    d.numFaces = mesh.numFaces();
-    d.numVertsPerFace = mesh.faceSizes.data();
-    d.faceVertIndices = mesh.faceVerts.data();
-    return d;
+    return test::descriptorOf(mesh.numVertices, mesh.faceSizes, mesh.faceVerts);
 }
 
 // A UV sphere with triangle fans at its poles: its factorized stencils near the poles span the
@@ -144,14 +139,7 @@ struct LocalBook {
     explicit LocalBook(int pages) : sizes(size_t(pages), 3), numVertices(pages + 2) {
         for (int i = 0; i < pages; ++i) verts.insert(verts.end(), {0, 1, i + 2});
     }
-    TopologyDescriptor descriptor() const {
-        TopologyDescriptor d;
-        d.numVertices = numVertices;
-        d.numFaces = int(sizes.size());
-        d.numVertsPerFace = sizes.data();
-        d.faceVertIndices = verts.data();
-        return d;
-    }
+    TopologyDescriptor descriptor() const { return test::descriptorOf(numVertices, sizes, verts); }
 };
 
 // Nor may it overshoot by far, or it refuses what fits: catmark-butterfly's Zorin masks read

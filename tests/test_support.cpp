@@ -82,4 +82,13 @@ StencilTable handCheckedTable() {
     return t;
 }
 
+TopologyDescriptor descriptorOf(int numVertices, const std::vector<int>& sizes, const std::vector<int>& verts) {
+    TopologyDescriptor d;
+    d.numVertices = numVertices;
+    d.numFaces = int(sizes.size());
+    d.numVertsPerFace = sizes.data();
+    d.faceVertIndices = verts.data();
+    return d;
+}
+
 }  // namespace quadtri::test

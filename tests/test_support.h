@@ -37,6 +37,10 @@ std::vector<std::string> allMeshes();
 // `text` with every character that is not a letter or digit replaced by '_' (a test name).
 std::string testNameOf(std::string text);
 
+// A descriptor over faces of the given sizes and corners (no tags); valid while `sizes` and
+// `verts` live.
+TopologyDescriptor descriptorOf(int numVertices, const std::vector<int>& sizes, const std::vector<int>& verts);
+
 // Three stencils over four sources: 0.5 s0 + 0.5 s1, s3, 0.25 (s0 + s1 + s2 + s3).
 StencilTable handCheckedTable();
 
