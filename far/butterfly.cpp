@@ -1,11 +1,12 @@
 // Surface rules of catmark-butterfly (see butterfly.h). Every weight below is either Butterfly's
 // or Zorin's, or was derived by docs/catmark_butterfly/derive_seam_rules.py.
-#include "far/butterfly.h"
+#include "far/internal/butterfly.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -315,4 +316,5 @@ double CatmarkButterflyMasks::seamWeightOfSide(int f, int a, int b) const {
     return sum;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,4 +1,4 @@
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 
 #include <stdexcept>
 #include <string>
@@ -6,10 +6,13 @@
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
-#include "far/refine_topology.h"
-#include "far/rules.h"
+#include "far/internal/refine_topology.h"
+#include "far/internal/rules.h"
+#include "far/internal/stencil_table_double.h"
+#include "far/internal/topology_builder.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
     levels_.push_back(buildBaseTopology(desc, options, &warnings_));
@@ -159,4 +162,5 @@ StencilTable Refiner::factorizedStencils(int L) const {
     return toFloatTable(composed);
 }
 
+}  // namespace v0
 }  // namespace quadtri

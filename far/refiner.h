@@ -4,11 +4,12 @@
 
 #include <vector>
 
-#include "far/options.h"
-#include "far/stencil_table.h"
-#include "far/topology.h"
+#include <quadtri/far/options.h>
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 class Refiner {
 public:
@@ -61,4 +62,5 @@ private:
     std::vector<StencilTable> levelTables_;
 };
 
+}  // namespace v0
 }  // namespace quadtri

@@ -12,7 +12,7 @@
 // sharp masks and everything away from the network are shared. Catmark-butterfly replaces every
 // mask that touches a triangle (butterfly.cpp) except at irregular smooth seam vertices, and keeps
 // the rest: Catmull-Clark, and Stam-Loop's mixed vertex rule there.
-#include "far/rules.h"
+#include "far/internal/rules.h"
 
 #include <algorithm>
 #include <array>
@@ -24,14 +24,16 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "far/butterfly.h"
-#include "far/crease.h"
-#include "far/regular_masks.h"
-#include "far/schaefer_warren.h"
-#include "far/sparse_accumulator.h"
-#include "far/stencil_writer.h"
+#include "far/internal/butterfly.h"
+#include "far/internal/crease.h"
+#include "far/internal/regular_masks.h"
+#include "far/internal/schaefer_warren.h"
+#include "far/internal/sparse_accumulator.h"
+#include "far/internal/stencil_writer.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 double stamLoopEta(int nE, int nQ, int nT) {
     const double n = nE;
@@ -322,4 +324,5 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
 template StencilTable buildLevelStencils<StencilTable>(const Topology&, const ChildNumbering&, const Options&);
 template StencilTableD buildLevelStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&);
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,9 +1,11 @@
-#include "far/schaefer_warren.h"
+#include "far/internal/schaefer_warren.h"
 
-#include "far/rules.h"
-#include "far/unzip.h"
+#include "far/internal/rules.h"
+#include "far/internal/unzip.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 UnzippedLevel::UnzippedLevel(const Topology& t)
     : triangleCopies(unzipStencils(t, Piece::Triangle)),
@@ -134,4 +136,5 @@ void SchaeferWarrenMasks::vertexPoint(int v, double scale) {
     acc_.add(v, scale * (1.0 - k));
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,13 +1,15 @@
 // Connectivity from face-vertex lists: edges, incidences and boundary / non-manifold / seam flags.
-#include "far/topology.h"
+#include <quadtri/far/topology.h>
 
-#include "far/face_loops.h"
+#include "far/internal/face_loops.h"
+#include "far/internal/topology_builder.h"
 
 #include <algorithm>
 #include <string>
 #include <utility>
 
 namespace quadtri {
+inline namespace v0 {
 
 const char* toString(Scheme scheme) {
     switch (scheme) {
@@ -340,4 +342,5 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     return t;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "osd/cpu_evaluator.h"
-#include "osd/tbb_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 #include "tests/test_support.h"
 
 namespace quadtri {

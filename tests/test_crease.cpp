@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "far/crease.h"
+#include "far/internal/crease.h"
 #include "tests/test_support.h"
 
 namespace quadtri::test {

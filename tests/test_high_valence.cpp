@@ -13,9 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
 #include "tests/seam_support.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
 // Test names and messages show the scheme's name, not its bytes.

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 
-#include "far/refine_topology.h"
+#include "far/internal/refine_topology.h"
 #include "tests/test_support.h"
+#include "far/internal/stencil_table_double.h"
+#include "far/internal/topology_builder.h"
 
 namespace quadtri::test {
 namespace {

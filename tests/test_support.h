@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tools/obj_io.h"
 
 namespace quadtri::test {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
 
 namespace {
@@ -115,7 +115,7 @@ TEST(Validation, VertexIndexOutOfRange) {
                   "index 1000000", Component::Face, 2);
 }
 
-// A face that repeats a vertex is read as the simple loops it walks around (far/face_loops.h):
+// A face that repeats a vertex is read as the simple loops it walks around (far/internal/face_loops.h):
 // the result must be the same surface, bitwise, as the mesh written with those loops as faces,
 // with a warning naming the face and the vertex.
 void expectSameRefinement(const LocalMesh& degenerate, const LocalMesh& clean, const std::string& what) {

@@ -10,8 +10,8 @@
 #include <map>
 #include <vector>
 
-#include "far/refiner.h"
-#include "osd/cpu_evaluator.h"
+#include <quadtri/far/refiner.h>
+#include <quadtri/osd/cpu_evaluator.h>
 #include "tools/obj_io.h"
 
 namespace quadtri::cli {

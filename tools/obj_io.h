@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "far/options.h"
-#include "far/topology.h"
+#include <quadtri/far/options.h>
+#include <quadtri/far/topology.h>
 
 namespace quadtri::io {
 

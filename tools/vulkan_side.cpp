@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "far/refiner.h"
-#include "osd/vulkan_evaluator.h"
+#include <quadtri/far/refiner.h>
+#include <quadtri/osd/vulkan_evaluator.h>
 #include "tools/commands.h"
 
 namespace quadtri::cli {

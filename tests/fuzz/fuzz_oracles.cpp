@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "osd/cpu_evaluator.h"
-#include "osd/tbb_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 
 namespace quadtri::fuzz {
 

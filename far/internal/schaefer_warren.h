@@ -5,14 +5,16 @@
 // pre-unzip position, so that away from the network the masks equal Stam-Loop's exactly.
 #pragma once
 
-#include "far/sparse_accumulator.h"
-#include "far/stencil_table.h"
-#include "far/topology.h"
+#include "far/internal/sparse_accumulator.h"
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/far/topology.h>
+#include "far/internal/stencil_table_double.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace quadtri {
+inline namespace v0 {
 
 // What every mask of a level reads: each vertex's copies in the unzipped pieces (as stencils over
 // the level's vertices) and which faces have a vertex on the network. Built once per level and
@@ -58,4 +60,5 @@ private:
     SparseAccumulator& acc_;
 };
 
+}  // namespace v0
 }  // namespace quadtri

@@ -5,9 +5,10 @@
 
 #include <vector>
 
-#include "far/topology.h"
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 // Where the children of a parent level's components land in the child level's vertex list:
 // face points of non-triangle faces first, then edge points, then vertex points.
@@ -26,4 +27,5 @@ ChildNumbering numberChildren(const Topology& parent);
 Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod,
                         TopologyDetail detail = TopologyDetail::Full);
 
+}  // namespace v0
 }  // namespace quadtri

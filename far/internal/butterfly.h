@@ -19,11 +19,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "far/crease.h"
-#include "far/sparse_accumulator.h"
-#include "far/topology.h"
+#include "far/internal/crease.h"
+#include "far/internal/sparse_accumulator.h"
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 class CatmarkButterflyMasks {
 public:
@@ -89,4 +90,5 @@ private:
     std::vector<std::vector<double>> weightsByValence_;
 };
 
+}  // namespace v0
 }  // namespace quadtri

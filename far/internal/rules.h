@@ -3,12 +3,14 @@
 
 #include <vector>
 
-#include "far/options.h"
-#include "far/refine_topology.h"
-#include "far/stencil_table.h"
-#include "far/topology.h"
+#include <quadtri/far/options.h>
+#include "far/internal/refine_topology.h"
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/far/topology.h>
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 // η of the Stam-Loop correction v2 = v1 + η (v1 - v0) for a smooth vertex with nE incident
 // edges, nQ quad-like and nT triangular faces (docs/schemes/stam_loop.md, §3).
@@ -22,4 +24,5 @@ double stamLoopEta(int nE, int nQ, int nT);
 template <typename Table>
 Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering, const Options& options);
 
+}  // namespace v0
 }  // namespace quadtri
