@@ -15,8 +15,8 @@ vulkan=${QUADTRI_WITH_VULKAN:-ON}
 work=$(mktemp -d)
 if [ "${KEEP:-0}" = 1 ]; then echo "consumer: working in $work"; else trap 'rm -rf "$work"' EXIT; fi
 
-cmake_args=(-G Ninja -DCMAKE_BUILD_TYPE=Release)
-command -v ninja >/dev/null || cmake_args=()
+cmake_args=(-DCMAKE_BUILD_TYPE=Release)
+command -v ninja >/dev/null && cmake_args+=(-G Ninja)
 # ccache when present: paths under the temporary folder are hashed relative to it, so reruns hit.
 if command -v ccache >/dev/null; then
     cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
@@ -24,25 +24,32 @@ if command -v ccache >/dev/null; then
 fi
 
 step() { echo "consumer: $*"; }
-timed() { local start=$SECONDS; "$@"; echo "consumer:   $((SECONDS - start)) s" >&2; }
+# logged LOG WHAT COMMAND...: runs the command with its output appended to $work/LOG.log, says how
+# long it took ("consumer:   build: 26 s"), and on failure prints the log and stops.
+logged() {
+    local log="$work/$1.log" what=$2 start=$SECONDS
+    shift 2
+    "$@" >>"$log" 2>&1 || { cat "$log"; echo "consumer: $what failed" >&2; exit 1; }
+    echo "consumer:   $what: $((SECONDS - start)) s"
+}
 
 step "add_subdirectory: configure, build"
-timed cmake -S "$here/add_subdirectory" -B "$work/subdir" "${cmake_args[@]}" -DQUADTRI_WITH_VULKAN="$vulkan" >"$work/subdir.log"
-timed cmake --build "$work/subdir" -j "$jobs" >>"$work/subdir.log" || { cat "$work/subdir.log"; exit 1; }
+logged subdir configure cmake -S "$here/add_subdirectory" -B "$work/subdir" "${cmake_args[@]}" -DQUADTRI_WITH_VULKAN="$vulkan"
+logged subdir build cmake --build "$work/subdir" -j "$jobs"
 
 step "quadtri alone: configure, build, install into $work/prefix"
-timed cmake -S "$repo" -B "$work/quadtri" "${cmake_args[@]}" -DQUADTRI_WITH_VULKAN="$vulkan" \
-      -DQUADTRI_BUILD_TESTS=OFF -DQUADTRI_BUILD_BENCH=OFF -DQUADTRI_BUILD_TOOLS=OFF -DQUADTRI_BUILD_EXAMPLES=OFF >"$work/quadtri.log"
-timed cmake --build "$work/quadtri" -j "$jobs" >>"$work/quadtri.log" || { cat "$work/quadtri.log"; exit 1; }
-cmake --install "$work/quadtri" --prefix "$work/prefix" >>"$work/quadtri.log"
+logged quadtri configure cmake -S "$repo" -B "$work/quadtri" "${cmake_args[@]}" -DQUADTRI_WITH_VULKAN="$vulkan" \
+       -DQUADTRI_BUILD_TESTS=OFF -DQUADTRI_BUILD_BENCH=OFF -DQUADTRI_BUILD_TOOLS=OFF -DQUADTRI_BUILD_EXAMPLES=OFF
+logged quadtri build cmake --build "$work/quadtri" -j "$jobs"
+logged quadtri install cmake --install "$work/quadtri" --prefix "$work/prefix"
 # Only the public headers: nothing of far/internal/, osd/internal/ or kernels/.
 if find "$work/prefix/include" -path '*internal*' -o -path '*kernels*' | grep .; then
     echo "consumer: internal headers were installed (above)" >&2; exit 1
 fi
 
 step "find_package: configure, build against the prefix"
-timed cmake -S "$here/find_package" -B "$work/installed" "${cmake_args[@]}" -DCMAKE_PREFIX_PATH="$work/prefix" >"$work/installed.log"
-timed cmake --build "$work/installed" -j "$jobs" >>"$work/installed.log" || { cat "$work/installed.log"; exit 1; }
+logged installed configure cmake -S "$here/find_package" -B "$work/installed" "${cmake_args[@]}" -DCMAKE_PREFIX_PATH="$work/prefix"
+logged installed build cmake --build "$work/installed" -j "$jobs"
 
 step "pkg-config: one-line programs against the prefix"
 export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
