@@ -51,19 +51,24 @@ step "find_package: configure, build against the prefix"
 logged installed configure cmake -S "$here/find_package" -B "$work/installed" "${cmake_args[@]}" -DCMAKE_PREFIX_PATH="$work/prefix"
 logged installed build cmake --build "$work/installed" -j "$jobs"
 
-step "pkg-config: one-line programs against the prefix"
-export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
-echo '#include <quadtri/quadtri.h>
-int main() { return quadtri::toString(quadtri::Options{}.scheme)[0] == 0; }' >"$work/pc.cpp"
-# shellcheck disable=SC2046  # pkg-config's flags are meant to be split
-c++ -std=c++17 $(pkg-config --cflags quadtri) "$work/pc.cpp" -o "$work/pc" $(pkg-config --libs quadtri)
-"$work/pc"
-if [ -f "$work/prefix/lib/pkgconfig/quadtri-vulkan.pc" ]; then
-    echo '#include <quadtri/osd/vulkan_context.h>
-int main() { return quadtri::vkResultName(VK_SUCCESS)[0] == 0; }' >"$work/pc_vulkan.cpp"
-    # shellcheck disable=SC2046
-    c++ -std=c++17 $(pkg-config --cflags quadtri-vulkan) "$work/pc_vulkan.cpp" -o "$work/pc_vulkan" $(pkg-config --libs quadtri-vulkan)
-    "$work/pc_vulkan"
+if ! command -v pkg-config >/dev/null; then
+    step "pkg-config: not installed, skipped (Debian: pkgconf)"
+else
+    step "pkg-config: one-line programs against the prefix"
+    export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
+    printf '%s\n' '#include <quadtri/quadtri.h>' \
+        'int main() { return quadtri::toString(quadtri::Options{}.scheme)[0] == 0; }' >"$work/pc.cpp"
+    # shellcheck disable=SC2046  # pkg-config's flags are meant to be split
+    c++ -std=c++17 $(pkg-config --cflags quadtri) "$work/pc.cpp" -o "$work/pc" $(pkg-config --libs quadtri)
+    "$work/pc"
+    if [ -f "$work/prefix/lib/pkgconfig/quadtri-vulkan.pc" ]; then
+        printf '%s\n' '#include <quadtri/osd/vulkan_context.h>' \
+            'int main() { return quadtri::vkResultName(VK_SUCCESS)[0] == 0; }' >"$work/pc_vulkan.cpp"
+        # shellcheck disable=SC2046
+        c++ -std=c++17 $(pkg-config --cflags quadtri-vulkan) "$work/pc_vulkan.cpp" -o "$work/pc_vulkan" \
+            $(pkg-config --libs quadtri-vulkan)
+        "$work/pc_vulkan"
+    fi
 fi
 
 for build in subdir installed; do
