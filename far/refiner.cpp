@@ -19,6 +19,15 @@ Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : optio
     detail_.push_back(TopologyDetail::Full);
 }
 
+const Topology& Refiner::level(int L) const {
+    const Topology& topology = levels_.at(L);
+    if (detail_[L] == TopologyDetail::FacesOnly)
+        throw std::logic_error("level " + std::to_string(L) + " holds its faces only: read them with faces(" +
+                               std::to_string(L) + "), or refine with refineUniform(" + std::to_string(L) +
+                               ", TopologyDetail::Full) for its edges and incidences");
+    return topology;
+}
+
 std::size_t Refiner::estimateLevelBytes(int L) const {
     const Topology& p = levels_.at(L - 1);
     std::size_t faces = 0, corners = 0, entries = 0, facePoints = 0;

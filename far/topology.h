@@ -9,6 +9,21 @@
 namespace quadtri {
 inline namespace v0 {
 
+// A run of indices inside one of Topology's arrays (a face's corners, a vertex's edges): two
+// pointers, so that hot loops read it as they would the raw offsets.
+class IndexSpan {
+public:
+    IndexSpan(const int* first, const int* last) : first_(first), last_(last) {}
+    const int* begin() const { return first_; }
+    const int* end() const { return last_; }
+    int size() const { return int(last_ - first_); }
+    int operator[](int i) const { return first_[i]; }
+
+private:
+    const int* first_;
+    const int* last_;
+};
+
 enum EdgeFlag : uint8_t {
     kEdgeBoundary = 1,     // exactly one incident face
     kEdgeNonManifold = 2,  // more than two faces, or two faces that traverse it the same way
@@ -62,7 +77,7 @@ struct Topology {
 // (to draw or write them); its edges, incidences, flags and sharpness are several times the cost.
 enum class TopologyDetail {
     Full,       // faces, edges, incidences, flags and sharpness
-    FacesOnly,  // numVertices, faceOffsets, faceVerts and faceHole; every other array empty
+    FacesOnly,  // numVertices, faceOffsets, faceVerts and faceHole only: Refiner::faces reads it, Refiner::level refuses it
 };
 
 // Bytes of a topology's arrays.

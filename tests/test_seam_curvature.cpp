@@ -191,7 +191,7 @@ TEST(Curvature, JumpAcrossTheSeamOfMixedTorus) {
         std::vector<double> pos(mesh.positions.begin(), mesh.positions.end());
         for (int L = 1; L <= kLast; ++L) {
             const StencilTableD table = doubleLevelTable(refiner, L);
-            ASSERT_EQ(int(table.sizes.size()), refiner.level(L).numVertices);
+            ASSERT_EQ(int(table.sizes.size()), refiner.faces(L).numVertices());
             pos = applyTable(table, pos, 3);
             if (L < kFirst) continue;
             const Topology& t = refiner.level(L);

@@ -129,7 +129,7 @@ TEST(StencilTableGuard, FactorizedTablesAreBudgeted) {
     Refiner roomy(descriptorOf(sphere), Options());
     roomy.refineUniform(2);
     const StencilTable factorized = roomy.factorizedStencils(2);
-    EXPECT_EQ(factorized.numStencils(), roomy.level(2).numVertices);
+    EXPECT_EQ(factorized.numStencils(), roomy.faces(2).numVertices());
     EXPECT_LE(factorized.bytes() + roomy.bytes(), Options().memoryBudgetBytes);
 }
 
