@@ -30,8 +30,9 @@ int main() {
     // Validation comes first, so bad input fails here, before any work, naming the face.
     quadtri::Refiner refiner(desc, options);
     const int level = 2;
-    // Full: we read level 2's faces below (by default the last level keeps only what drawing needs).
-    refiner.refineUniform(level, quadtri::TopologyDetail::Full);
+    // The last level keeps only its faces (what drawing needs); ask for TopologyDetail::Full
+    // as a second argument to read its edges and incidences with refiner.level(2) too.
+    refiner.refineUniform(level);
 
     // Two kinds of tables. Per level (refiner.levelStencils(l): level l from level l-1) gives
     // every level, for levels of detail. Factorized gives level 2 straight from the control
@@ -49,12 +50,12 @@ int main() {
 
     // To draw: level 2's faces index `refined`. Triangles stay triangles and quads split into
     // two; hole faces (none here) are skipped.
-    const quadtri::Topology& faces = refiner.level(level);
+    const quadtri::LevelFaces faces = refiner.faces(level);
     std::vector<int> triangles;
     for (int f = 0; f < faces.numFaces(); ++f) {
-        if (faces.faceHole[f]) continue;
-        const int* v = &faces.faceVerts[faces.faceOffsets[f]];
-        for (int k = 2; k < faces.faceSize(f); ++k) triangles.insert(triangles.end(), {v[0], v[k - 1], v[k]});
+        if (faces.isHole(f)) continue;
+        const quadtri::IndexSpan v = faces.verticesOfFace(f);
+        for (int k = 2; k < v.size(); ++k) triangles.insert(triangles.end(), {v[0], v[k - 1], v[k]});
     }
     std::printf("level %d: %d vertices, %zu triangles to draw; vertex 0 at (%.3f %.3f %.3f)\n", level,
                 table.numStencils(), triangles.size() / 3, refined[0], refined[1], refined[2]);

@@ -83,8 +83,12 @@ int run() {
     std::printf("quadtri %s: level 2 has %d vertices\n", QUADTRI_VERSION_STRING, table.numStencils());
     // Level 1: 5 face points (quads only) + 13 edge points + 8 vertex points = 26 vertices, 52
     // edges (2 per old edge, 4 inside each quad, 3 inside each triangle), 20 quads and 8 triangles.
-    // Level 2: 20 + 52 + 26.
-    check(table.numStencils() == 98 && refiner.level(2).numVertices == 98, "98 vertices at level 2");
+    // Level 2: 20 + 52 + 26 vertices, 80 quads and 32 triangles.
+    const quadtri::LevelFaces faces = refiner.faces(2);
+    check(table.numStencils() == 98 && faces.numVertices() == 98, "98 vertices at level 2");
+    int quads = 0, triangles = 0;
+    for (int f = 0; f < faces.numFaces(); ++f) (faces.faceSize(f) == 4 ? quads : triangles) += 1;
+    check(quads == 80 && triangles == 32, "80 quads and 32 triangles at level 2");
 
     const quadtri::BufferDescriptor xyz(0, 3, 3);
     std::vector<float> cpu(3 * std::size_t(table.numStencils())), tbb(cpu.size());
