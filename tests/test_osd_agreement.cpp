@@ -400,9 +400,7 @@ TEST_P(OsdAgreementBoundaryNone, OpenShapes) {
             osdRefine(mesh, s.reference, BoundaryInterpolation::None, refiner.options().creaseMethod, 3);
         const double diagonal = boundingBoxDiagonal(mesh.positions);
         for (int L = 0; L <= 3; ++L) {
-            const Topology& t = refiner.level(L);
-            int holes = 0;
-            for (uint8_t h : t.faceHole) holes += h;
+            const int holes = refiner.faces(L).numHoles();
             EXPECT_GT(holes, 0) << s.shape << " level " << L;
             EXPECT_EQ(holes, osd.numHoleFaces(L)) << s.shape << " level " << L;
             const PositionMatch m = matchPositions(ours[L], osd.positions[L], diagonal, 1e-5);

@@ -13,6 +13,7 @@
 #include <vector>
 
 namespace quadtri {
+inline namespace v0 {
 
 // What splitting one face did, for the warning that names it.
 struct FaceLoops {
@@ -35,4 +36,5 @@ private:
     std::vector<int> walk_;
 };
 
+}  // namespace v0
 }  // namespace quadtri
