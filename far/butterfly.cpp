@@ -5,14 +5,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "far/internal/level_estimate.h"
+
 namespace quadtri {
 inline namespace v0 {
 
 namespace {
 
 bool edgeHasQuad(const Topology& t, int e) {
-    for (int k = t.edgeFaceOffsets[e]; k < t.edgeFaceOffsets[e + 1]; ++k)
-        if (t.faceSize(t.edgeFaces[k]) != 3) return true;
+    for (int f : t.facesOfEdge(e))
+        if (t.faceSize(f) != 3) return true;
     return false;
 }
 
@@ -32,7 +34,7 @@ bool takesZorinRule(int valence) { return valence >= 3 && valence != 6; }
 }  // namespace
 
 CatmarkButterflyMasks::CatmarkButterflyMasks(const Topology& topology, SparseAccumulator& accumulator)
-    : t_(topology), acc_(accumulator), kind_(size_t(topology.numVertices)), sharpEdges_(size_t(topology.numVertices)) {
+    : StamLoopMasks(topology, accumulator), kind_(size_t(topology.numVertices)), sharpEdges_(size_t(topology.numVertices)) {
     for (int v = 0; v < t_.numVertices; ++v) kind_[size_t(v)] = classify(v);
     for (int e = 0; e < t_.numEdges(); ++e) {
         if (!isSharp(t_.edgeSharpness[e])) continue;
@@ -45,14 +47,13 @@ CatmarkButterflyMasks::CatmarkButterflyMasks(const Topology& topology, SparseAcc
 
 CatmarkButterflyMasks::Kind CatmarkButterflyMasks::classify(int v) const {
     int quads = 0, triangles = 0, ngons = 0, seamEdges = 0;
-    for (int i = t_.vertFaceOffsets[v]; i < t_.vertFaceOffsets[v + 1]; ++i) {
-        const int n = t_.faceSize(t_.vertFaces[i]);
+    for (int f : t_.facesOfVertex(v)) {
+        const int n = t_.faceSize(f);
         (n == 3 ? triangles : n == 4 ? quads : ngons)++;
     }
     if (triangles == 0) return Kind::QuadOnly;
     if (quads + ngons == 0) return Kind::TriangleOnly;
-    for (int i = t_.vertEdgeOffsets[v]; i < t_.vertEdgeOffsets[v + 1]; ++i)
-        seamEdges += (t_.edgeFlags[t_.vertEdges[i]] & kEdgeSeam) ? 1 : 0;
+    for (int e : t_.edgesOfVertex(v)) seamEdges += (t_.edgeFlags[e] & kEdgeSeam) ? 1 : 0;
     const bool regular = closedFanValence(t_, v) == 5 && quads == 2 && ngons == 0 && triangles == 3 && seamEdges == 2;
     return regular ? Kind::RegularSeam : Kind::Seam;
 }
@@ -71,8 +72,8 @@ bool CatmarkButterflyMasks::touchesVertex(int v, VertexRule rule) const {
 }
 
 bool CatmarkButterflyMasks::touchesEdge(int e) const {
-    for (int k = t_.edgeFaceOffsets[e]; k < t_.edgeFaceOffsets[e + 1]; ++k)
-        if (t_.faceSize(t_.edgeFaces[k]) == 3) return true;
+    for (int f : t_.facesOfEdge(e))
+        if (t_.faceSize(f) == 3) return true;
     return false;
 }
 
@@ -83,6 +84,7 @@ bool CatmarkButterflyMasks::touchesSharpEdge(int e) const {
 }
 
 void CatmarkButterflyMasks::vertexPoint(int v, VertexRule rule, const float* edgeSharpness, double scale) {
+    if (!touchesVertex(v, rule)) return StamLoopMasks::vertexPoint(v, rule, edgeSharpness, scale);
     if (interpolated(v)) return acc_.add(v, scale);
     if (rule == VertexRule::Crease) return creaseVertex(v, edgeSharpness, scale);
     seamVertex(v, scale);
@@ -93,21 +95,17 @@ void CatmarkButterflyMasks::vertexPoint(int v, VertexRule rule, const float* edg
 // corner, 5/8 at the vertex.
 void CatmarkButterflyMasks::seamVertex(int v, double scale) {
     acc_.add(v, scale * 5.0 / 8.0);
-    for (int i = t_.vertEdgeOffsets[v]; i < t_.vertEdgeOffsets[v + 1]; ++i) {
-        const int e = t_.vertEdges[i];
+    for (int e : t_.edgesOfVertex(v))
         acc_.add(t_.otherVertex(e, v), scale * (edgeHasQuad(t_, e) ? 9.0 / 112.0 : 3.0 / 56.0));
-    }
-    for (int i = t_.vertFaceOffsets[v]; i < t_.vertFaceOffsets[v + 1]; ++i) {
-        const int f = t_.vertFaces[i], b = t_.faceOffsets[f];
+    for (int f : t_.facesOfVertex(v)) {
         if (t_.faceSize(f) != 4) continue;
-        int corner = 0;
-        while (t_.faceVerts[b + corner] != v) ++corner;
-        acc_.add(t_.faceVerts[b + (corner + 2) % 4], scale * 3.0 / 224.0);
+        acc_.add(t_.verticesOfFace(f)[(t_.cornerOfVertex(f, v) + 2) % 4], scale * 3.0 / 224.0);
     }
 }
 
 void CatmarkButterflyMasks::smoothEdgePoint(int e, double scale) {
-    const int f0 = t_.edgeFaces[t_.edgeFaceOffsets[e]], f1 = t_.edgeFaces[t_.edgeFaceOffsets[e] + 1];
+    if (!touchesEdge(e)) return StamLoopMasks::smoothEdgePoint(e, scale);
+    const int f0 = t_.facesOfEdge(e)[0], f1 = t_.facesOfEdge(e)[1];
     if (t_.faceSize(f0) == 3 && t_.faceSize(f1) == 3)
         butterflyEdge(e, scale);
     else
@@ -120,8 +118,8 @@ void CatmarkButterflyMasks::seamEdge(int e, double scale) {
     const int a = t_.edgeVerts[2 * e], b = t_.edgeVerts[2 * e + 1];
     acc_.add(a, scale * 11.0 / 28.0);
     acc_.add(b, scale * 11.0 / 28.0);
-    for (int k = t_.edgeFaceOffsets[e]; k < t_.edgeFaceOffsets[e + 1]; ++k) {
-        const int f = t_.edgeFaces[k], n = t_.faceSize(f);
+    for (int f : t_.facesOfEdge(e)) {
+        const int n = t_.faceSize(f);
         if (n == 3) {
             const int c = thirdVertex(f, a, b);
             acc_.add(c, scale * 13.0 / 112.0);
@@ -129,8 +127,8 @@ void CatmarkButterflyMasks::seamEdge(int e, double scale) {
             addWing(f, b, c, a, -scale / 224.0);
             continue;
         }
-        for (int i = t_.faceOffsets[f]; i < t_.faceOffsets[f + 1]; ++i)
-            if (t_.faceVerts[i] != a && t_.faceVerts[i] != b) acc_.add(t_.faceVerts[i], scale * 3.0 / 28.0 / (n - 2));
+        for (int c : t_.verticesOfFace(f))
+            if (c != a && c != b) acc_.add(c, scale * 3.0 / 28.0 / (n - 2));
     }
 }
 
@@ -141,7 +139,7 @@ void CatmarkButterflyMasks::seamEdge(int e, double scale) {
 // reflected (the docs measure why not Zorin's rule of the interpolated end nor eqs. 11/12).
 void CatmarkButterflyMasks::butterflyEdge(int e, double scale) {
     const int a = t_.edgeVerts[2 * e], b = t_.edgeVerts[2 * e + 1];
-    const int f0 = t_.edgeFaces[t_.edgeFaceOffsets[e]], f1 = t_.edgeFaces[t_.edgeFaceOffsets[e] + 1];
+    const int f0 = t_.facesOfEdge(e)[0], f1 = t_.facesOfEdge(e)[1];
     if (interpolated(a) && interpolated(b)) {
         const bool extraordinaryA = takesZorinRule(closedFanValence(t_, a));
         const bool extraordinaryB = takesZorinRule(closedFanValence(t_, b));
@@ -209,7 +207,7 @@ void CatmarkButterflyMasks::seamDiagonal(int s, int t, int towardsSeam, int away
 // per valence, and a ring longer than a few steps is walked once per centre (a vertex's edges
 // mostly come one after another; short rings, walked per edge, do not evict it).
 void CatmarkButterflyMasks::zorinEdge(int centre, int e, double scale) {
-    const int other = t_.otherVertex(e, centre), firstFace = t_.edgeFaces[t_.edgeFaceOffsets[e]];
+    const int other = t_.otherVertex(e, centre), firstFace = t_.facesOfEdge(e)[0];
     const int k = t_.vertexEdgeCount(centre);
     std::vector<int>* ring = &shortRing_;
     if (k > kShortRing) {
@@ -259,22 +257,23 @@ void CatmarkButterflyMasks::walkRing(int centre, int other, int face, std::vecto
 }
 
 int CatmarkButterflyMasks::thirdVertex(int f, int a, int b) const {
-    for (int i = t_.faceOffsets[f]; i < t_.faceOffsets[f + 1]; ++i)
-        if (t_.faceVerts[i] != a && t_.faceVerts[i] != b) return t_.faceVerts[i];
+    for (int c : t_.verticesOfFace(f))
+        if (c != a && c != b) return c;
     return -1;
 }
 
 int CatmarkButterflyMasks::otherFace(int e, int f) const {
     if (e < 0 || t_.edgeFaceCount(e) != 2) return -1;
-    const int first = t_.edgeFaces[t_.edgeFaceOffsets[e]];
-    return first == f ? t_.edgeFaces[t_.edgeFaceOffsets[e] + 1] : first;
+    const IndexSpan faces = t_.facesOfEdge(e);
+    return faces[0] == f ? faces[1] : faces[0];
 }
 
 int CatmarkButterflyMasks::edgeOfFace(int f, int x, int y) const {
-    const int b = t_.faceOffsets[f], n = t_.faceSize(f);
+    const IndexSpan corners = t_.verticesOfFace(f);
+    const int n = corners.size();
     for (int i = 0; i < n; ++i) {
-        const int u = t_.faceVerts[b + i], w = t_.faceVerts[b + (i + 1 == n ? 0 : i + 1)];
-        if ((u == x && w == y) || (u == y && w == x)) return t_.faceEdges[b + i];
+        const int u = corners[i], w = corners[i + 1 == n ? 0 : i + 1];
+        if ((u == x && w == y) || (u == y && w == x)) return t_.edgesOfFace(f)[i];
     }
     return -1;
 }
@@ -314,6 +313,62 @@ double CatmarkButterflyMasks::seamWeightOfSide(int f, int a, int b) const {
         if (w < 0 && !interpolated(d)) sum -= 0.0625;  // the reflection x + d − y reads d
     }
     return sum;
+}
+
+namespace {
+
+class CatmarkButterflyRules : public SchemeRules {
+public:
+    const char* name() const override { return "catmark-butterfly"; }
+    const char* description() const override {
+        return "Catmull-Clark on quads, interpolating Butterfly on triangles";
+    }
+    std::unique_ptr<SchemeMasks> makeMasks(const Topology& parent, const Options&, const SchemeLevel*,
+                                           SparseAccumulator& accumulator) const override {
+        return std::make_unique<CatmarkButterflyMasks>(parent, accumulator);
+    }
+    std::size_t extraLevelBytes(const Topology& parent) const override;
+};
+
+// Zorin's edge masks read the whole ring of an extraordinary vertex with triangles only: each of
+// its K edges' masks has up to K + 1 more entries than the shared estimate counts.
+std::size_t CatmarkButterflyRules::extraLevelBytes(const Topology& p) const {
+    std::vector<std::size_t> corners(std::size_t(p.numVertices), 0);
+    std::vector<uint8_t> touchesQuad(std::size_t(p.numVertices), 0);
+    for (int f = 0; f < p.numFaces(); ++f)
+        for (int v : p.verticesOfFace(f)) {
+            ++corners[std::size_t(v)];
+            touchesQuad[std::size_t(v)] |= p.faceSize(f) != 3;
+        }
+    auto extraordinary = [&](int v, std::size_t k) { return !touchesQuad[std::size_t(v)] && k >= 3 && k != 6; };
+    std::size_t entries = 0;
+    if (p.vertEdgeOffsets.size() == std::size_t(p.numVertices) + 1) {
+        // Zorin's rule applies where both ends have triangles only, at an end whose faces close
+        // a manifold fan.
+        for (int e = 0; e < p.numEdges(); ++e) {
+            const int a = p.edgeVerts[2 * e], b = p.edgeVerts[2 * e + 1];
+            if (touchesQuad[std::size_t(a)] || touchesQuad[std::size_t(b)]) continue;
+            for (int v : {a, b}) {
+                const std::size_t k = std::size_t(p.vertexEdgeCount(v));
+                if (!(p.vertFlags[std::size_t(v)] & (kVertexBoundary | kVertexNonManifold)) && extraordinary(v, k))
+                    entries += k + 1;
+            }
+        }
+    } else {
+        // Faces only: a vertex has at most one edge more than it has corners.
+        for (int v = 0; v < p.numVertices; ++v) {
+            const std::size_t k = corners[std::size_t(v)] + 1;
+            if (extraordinary(v, k)) entries += k * (k + 1);
+        }
+    }
+    return tableEntryBytes(entries);
+}
+
+}  // namespace
+
+const SchemeRules& catmarkButterflyRules() {
+    static const CatmarkButterflyRules rules;
+    return rules;
 }
 
 }  // namespace v0

@@ -65,10 +65,8 @@ int CatmarkButterflyMasks::curveContinuation(int v, int previous) const {
     // scanning its edges (a pole on many creases would cost its valence per sharp edge).
     if (isSharp(t_.vertSharpness[v]) || sharpEdges_[size_t(v)] != 2) return -1;
     int next = -1;
-    for (int i = t_.vertEdgeOffsets[v]; i < t_.vertEdgeOffsets[v + 1]; ++i) {
-        const int e = t_.vertEdges[i];
+    for (int e : t_.edgesOfVertex(v))
         if (isSharp(t_.edgeSharpness[e]) && t_.otherVertex(e, v) != previous) next = t_.otherVertex(e, v);
-    }
     return next;
 }
 
@@ -76,6 +74,7 @@ int CatmarkButterflyMasks::curveContinuation(int v, int previous) const {
 // the 4-point rule, or (3/8, 3/4, −1/8) where the curve ends at one endpoint, or the rule
 // solved for approximated points when the curve has crossed the seam.
 void CatmarkButterflyMasks::sharpEdgePoint(int e, double scale) {
+    if (!touchesSharpEdge(e)) return StamLoopMasks::sharpEdgePoint(e, scale);
     const int a = t_.edgeVerts[2 * e], b = t_.edgeVerts[2 * e + 1];
     const int before = curveContinuation(a, b), after = curveContinuation(b, a);
     CurvePoint points[4];
@@ -93,8 +92,9 @@ void CatmarkButterflyMasks::sharpEdgePoint(int e, double scale) {
 // more point into the triangle side, where the 4-point rule needs it.
 void CatmarkButterflyMasks::creaseVertex(int v, const float* edgeSharpness, double scale) {
     int ends[2] = {-1, -1}, found = 0;
-    for (int i = 0; i < t_.vertexEdgeCount(v) && found < 2; ++i)
-        if (isSharp(edgeSharpness[i])) ends[found++] = t_.otherVertex(t_.vertEdges[t_.vertEdgeOffsets[v] + i], v);
+    const IndexSpan edges = t_.edgesOfVertex(v);
+    for (int i = 0; i < edges.size() && found < 2; ++i)
+        if (isSharp(edgeSharpness[i])) ends[found++] = t_.otherVertex(edges[i], v);
     CurvePoint points[4] = {{ends[0], -1.0, !interpolated(ends[0])}, {v, 0.0, true}, {ends[1], 1.0, !interpolated(ends[1])}};
     int count = 3;
     if (interpolated(ends[0]) != interpolated(ends[1])) {

@@ -11,18 +11,19 @@ bool hasSharpness(const Topology& t) {
 }
 
 void childEdgeSharpnessAtVertex(const Topology& t, int v, CreaseMethod method, float* out) {
-    const int begin = t.vertEdgeOffsets[v], n = t.vertexEdgeCount(v);
+    const IndexSpan edges = t.edgesOfVertex(v);
+    const int n = edges.size();
     float semiSharpSum = 0.0f;
     int semiSharpCount = 0;
-    for (int i = 0; i < n; ++i) {
-        const float s = t.edgeSharpness[t.vertEdges[begin + i]];
+    for (int e : edges) {
+        const float s = t.edgeSharpness[e];
         if (isSemiSharp(s)) {
             semiSharpSum += s;
             ++semiSharpCount;
         }
     }
     for (int i = 0; i < n; ++i) {
-        const float s = t.edgeSharpness[t.vertEdges[begin + i]];
+        const float s = t.edgeSharpness[edges[i]];
         if (method == CreaseMethod::Uniform || semiSharpCount < 2 || !isSemiSharp(s)) {
             out[i] = decrementSharpness(s);
         } else {

@@ -2,13 +2,17 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 namespace quadtri {
 inline namespace v0 {
 
+// Each scheme's rules are registered in far/schemes.cpp; allSchemes() lists them.
 enum class Scheme {
     Bilinear,  // linear subdivision only: corners stay, edge midpoints, face centroids
     StamLoop,  // Stam-Loop quad/triangle: Catmull-Clark on quads, Loop on triangles, corrected mixed vertices
@@ -109,7 +113,12 @@ private:
     std::size_t needed_, held_, budget_;
 };
 
-const char* toString(Scheme scheme);
+const char* toString(Scheme scheme);  // the scheme's name: "stam-loop"
+// Every scheme, in the order help texts list them; a one-line description of each; the scheme
+// of a name as toString spells it, or nullopt.
+const std::vector<Scheme>& allSchemes();
+const char* describe(Scheme scheme);
+std::optional<Scheme> schemeNamed(std::string_view name);
 const char* toString(BoundaryInterpolation boundary);
 const char* toString(CreaseMethod method);
 

@@ -11,11 +11,12 @@
 namespace quadtri {
 inline namespace v0 {
 
-ChildNumbering numberChildren(const Topology& parent) {
+ChildNumbering numberChildren(const Topology& parent, TriangleSplit split) {
     ChildNumbering n;
+    n.triangleSplit = split;
     n.facePoint.assign(parent.numFaces(), -1);
     for (int f = 0; f < parent.numFaces(); ++f)
-        if (parent.faceSize(f) != 3) n.facePoint[f] = n.numFacePoints++;
+        if (!n.splitsInFour(parent.faceSize(f))) n.facePoint[f] = n.numFacePoints++;
     n.numEdges = parent.numEdges();
     return n;
 }
@@ -36,10 +37,11 @@ void forEach(int count, const Body& body) {
 // Builds the child level straight from the parent: its faces, edges, incidences and flags are
 // all known by construction, so no edge search, sort or fan walk is needed, and each array is
 // filled in parallel, each child item gathering from its parent's few neighbours.
-//   child faces: a quad-like face's n quads (corner i's first), a triangle's 3 corners then middle.
+//   child faces: a face split around a face point gives n quads (corner i's first), a triangle
+//                split in four its 3 corners then the middle.
 //   child edges: 2e and 2e+1 are the halves of parent edge e at edgeVerts[2e] and [2e+1]; then
-//                each parent face's interior edges: quad-like face j -> (edge point j, centre),
-//                triangle j -> (edge point j, edge point j+1) of the middle triangle.
+//                each parent face's interior edges: split around a face point, j -> (edge point j,
+//                centre); split in four, j -> (edge point j, edge point j+1) of the middle triangle.
 // Incidence lists come out in ascending order, as the generic builder (completeTopology) makes them.
 class ChildBuilder {
 public:
@@ -52,7 +54,7 @@ public:
         firstInterior_[0] = 2 * p_.numEdges();
         for (int f = 0; f < nf; ++f) {
             const int n = p_.faceSize(f);
-            firstChildFace_[f + 1] = firstChildFace_[f] + (n == 3 ? 4 : n);
+            firstChildFace_[f + 1] = firstChildFace_[f] + (inFour(n) ? 4 : n);
             firstInterior_[f + 1] = firstInterior_[f] + n;
         }
     }
@@ -70,36 +72,28 @@ public:
 
 private:
     int half(int e, int v) const { return 2 * e + (p_.edgeVerts[2 * e] == v ? 0 : 1); }
+    bool inFour(int faceSize) const { return num_.splitsInFour(faceSize); }
     // Interior edge j of face f, j in [-1, n]: wraps without a division.
     int interior(int f, int j) const {
         const int n = p_.faceSize(f);
         return firstInterior_[f] + (j < 0 ? j + n : j >= n ? j - n : j);
     }
-    // Position of edge e (or vertex v) among face f's edges (corners). A valid face holds each once.
-    int edgeSlot(int f, int e) const {
-        int j = 0;
-        while (p_.faceEdges[p_.faceOffsets[f] + j] != e) ++j;
-        return j;
-    }
-    int cornerSlot(int f, int v) const {
-        int j = 0;
-        while (p_.faceVerts[p_.faceOffsets[f] + j] != v) ++j;
-        return j;
-    }
 
     template <bool WithEdges>
     void faces() {
         const int nf = p_.numFaces(), numChildFaces = firstChildFace_[nf];
-        // A quad-like face of n corners makes n quads (4n child corners), a triangle four
-        // triangles (12): 4 child corners per parent corner either way.
+        // A face split around a face point makes n quads (4n child corners), a triangle split
+        // in four four triangles (12): 4 child corners per parent corner either way.
         c_.faceOffsets.resize(std::size_t(numChildFaces) + 1);
         c_.faceVerts.resize(4 * p_.faceVerts.size());
         c_.faceHole.resize(numChildFaces);
         if (WithEdges) c_.faceEdges.resize(c_.faceVerts.size());
         forEach(nf, [&](int f) {
-            const int b = p_.faceOffsets[f], n = p_.faceSize(f), first = firstChildFace_[f];
+            const IndexSpan corners = p_.verticesOfFace(f), sides = p_.edgesOfFace(f);
+            const int n = corners.size(), first = firstChildFace_[f];
+            const bool four = inFour(n);
             int* offsets = c_.faceOffsets.data() + first;
-            const int corner = 4 * b;
+            const int corner = 4 * p_.faceOffsets[f];
             int* verts = c_.faceVerts.data() + corner;
             int* edges = WithEdges ? c_.faceEdges.data() + corner : nullptr;
             // The edge is computed only when kept (a faces-only level skips the lookups).
@@ -109,10 +103,10 @@ private:
             };
             int k = 0;
             for (int i = 0, last = n - 1; i < n; last = i++) {  // corner i's child keeps the parent's orientation
-                const int v = p_.faceVerts[b + i], e = p_.faceEdges[b + i], prev = p_.faceEdges[b + last];
+                const int v = corners[i], e = sides[i], prev = sides[last];
                 offsets[i] = corner + k;
                 put(k++, num_.vertexPoint(v), [&] { return half(e, v); });
-                if (n == 3) {
+                if (four) {
                     put(k++, num_.edgePoint(e), [&] { return interior(f, last); });
                 } else {
                     put(k++, num_.edgePoint(e), [&] { return interior(f, i); });
@@ -120,9 +114,9 @@ private:
                 }
                 put(k++, num_.edgePoint(prev), [&] { return half(prev, v); });
             }
-            if (n == 3) {
+            if (four) {
                 offsets[3] = corner + k;
-                for (int i = 0; i < 3; ++i) put(k++, num_.edgePoint(p_.faceEdges[b + i]), [&] { return interior(f, i); });
+                for (int i = 0; i < 3; ++i) put(k++, num_.edgePoint(sides[i]), [&] { return interior(f, i); });
             }
             for (int i = first; i < firstChildFace_[f + 1]; ++i) c_.faceHole[i] = p_.faceHole[f];
         });
@@ -140,11 +134,12 @@ private:
             c_.edgeVerts[4 * std::size_t(e) + 3] = num_.vertexPoint(p_.edgeVerts[2 * e + 1]);
         });
         forEach(p_.numFaces(), [&](int f) {
-            const int b = p_.faceOffsets[f], n = p_.faceSize(f);
+            const IndexSpan sides = p_.edgesOfFace(f);
+            const int n = sides.size();
             for (int j = 0; j < n; ++j) {
                 const std::size_t k = interior(f, j);
-                c_.edgeVerts[2 * k] = num_.edgePoint(p_.faceEdges[b + j]);
-                c_.edgeVerts[2 * k + 1] = n == 3 ? num_.edgePoint(p_.faceEdges[b + (j == 2 ? 0 : j + 1)]) : num_.facePoint[f];
+                c_.edgeVerts[2 * k] = num_.edgePoint(sides[j]);
+                c_.edgeVerts[2 * k + 1] = inFour(n) ? num_.edgePoint(sides[j == 2 ? 0 : j + 1]) : num_.facePoint[f];
             }
         });
     }
@@ -167,9 +162,9 @@ private:
             int* out = c_.edgeFaces.data() + c_.edgeFaceOffsets[2 * e];
             const int n = p_.edgeFaceCount(e), a = p_.edgeVerts[2 * e];
             for (int i = 0; i < n; ++i) {
-                const int f = p_.edgeFaces[p_.edgeFaceOffsets[e] + i], fn = p_.faceSize(f), j = edgeSlot(f, e);
+                const int f = p_.facesOfEdge(e)[i], fn = p_.faceSize(f), j = p_.cornerOfEdge(f, e);
                 // The edge runs from corner j to corner j+1 of f.
-                const bool aFirst = p_.faceVerts[p_.faceOffsets[f] + j] == a;
+                const bool aFirst = p_.verticesOfFace(f)[j] == a;
                 const int next = j + 1 == fn ? 0 : j + 1;
                 out[i] = firstChildFace_[f] + (aFirst ? j : next);
                 out[n + i] = firstChildFace_[f] + (aFirst ? next : j);
@@ -179,9 +174,11 @@ private:
             const int n = p_.faceSize(f), first = firstChildFace_[f];
             for (int j = 0; j < n; ++j) {
                 int* out = c_.edgeFaces.data() + c_.edgeFaceOffsets[interior(f, j)];
-                // Quad-like: between child faces j and j+1; triangle: corner face j+1 and the middle.
+                // Around a face point: between child faces j and j+1; in four: corner face j+1
+                // and the middle.
                 const int next = j + 1 == n ? 0 : j + 1;
-                const int x = n == 3 ? next : j, y = n == 3 ? 3 : next;
+                const bool four = inFour(n);
+                const int x = four ? next : j, y = four ? 3 : next;
                 out[0] = first + std::min(x, y);
                 out[1] = first + std::max(x, y);
             }
@@ -227,8 +224,7 @@ private:
             case Kind::Edge: break;
             }
             int total = 0;
-            for (int k = p_.edgeFaceOffsets[i]; k < p_.edgeFaceOffsets[i + 1]; ++k)
-                total += p_.faceSize(p_.edgeFaces[k]) == 3 ? 3 : 2;
+            for (int f : p_.facesOfEdge(i)) total += inFour(p_.faceSize(f)) ? 3 : 2;
             return total;
         };
         auto fill = [&](int v, int* out) {
@@ -238,20 +234,18 @@ private:
                 for (int j = 0; j < p_.faceSize(i); ++j) out[j] = firstChildFace_[i] + j;
                 return;
             case Kind::Vertex:
-                for (int k = p_.vertFaceOffsets[i]; k < p_.vertFaceOffsets[i + 1]; ++k) {
-                    const int f = p_.vertFaces[k];
-                    *out++ = firstChildFace_[f] + cornerSlot(f, i);
-                }
+                for (int f : p_.facesOfVertex(i)) *out++ = firstChildFace_[f] + p_.cornerOfVertex(f, i);
                 return;
             case Kind::Edge: break;
             }
-            // Edge point of edge j of f: corner faces j and j+1, and a triangle's middle.
-            for (int k = p_.edgeFaceOffsets[i]; k < p_.edgeFaceOffsets[i + 1]; ++k) {
-                const int f = p_.edgeFaces[k], n = p_.faceSize(f), j = edgeSlot(f, i), first = firstChildFace_[f];
+            // Edge point of edge j of f: corner faces j and j+1, and the middle of a triangle split
+            // in four.
+            for (int f : p_.facesOfEdge(i)) {
+                const int n = p_.faceSize(f), j = p_.cornerOfEdge(f, i), first = firstChildFace_[f];
                 const int next = j + 1 == n ? 0 : j + 1;
                 *out++ = first + std::min(j, next);
                 *out++ = first + std::max(j, next);
-                if (n == 3) *out++ = first + 3;
+                if (inFour(n)) *out++ = first + 3;
             }
         };
         incidence(c_.vertFaceOffsets, c_.vertFaces, count, fill);
@@ -266,8 +260,7 @@ private:
             case Kind::Edge: break;
             }
             int total = 2;
-            for (int k = p_.edgeFaceOffsets[i]; k < p_.edgeFaceOffsets[i + 1]; ++k)
-                total += p_.faceSize(p_.edgeFaces[k]) == 3 ? 2 : 1;
+            for (int f : p_.facesOfEdge(i)) total += inFour(p_.faceSize(f)) ? 2 : 1;
             return total;
         };
         auto fill = [&](int v, int* out) {
@@ -277,17 +270,17 @@ private:
                 for (int j = 0; j < p_.faceSize(i); ++j) out[j] = firstInterior_[i] + j;
                 return;
             case Kind::Vertex:
-                for (int k = p_.vertEdgeOffsets[i]; k < p_.vertEdgeOffsets[i + 1]; ++k) *out++ = half(p_.vertEdges[k], i);
+                for (int e : p_.edgesOfVertex(i)) *out++ = half(e, i);
                 return;
             case Kind::Edge: break;
             }
-            // Edge point: both halves, then per face the interior edges ending at it (a
-            // quad-like face's edge j -> interior j; a triangle's -> interiors j-1 and j).
+            // Edge point: both halves, then per face the interior edges ending at it (split
+            // around a face point, edge j -> interior j; in four, -> interiors j-1 and j).
             *out++ = 2 * i;
             *out++ = 2 * i + 1;
-            for (int k = p_.edgeFaceOffsets[i]; k < p_.edgeFaceOffsets[i + 1]; ++k) {
-                const int f = p_.edgeFaces[k], j = edgeSlot(f, i);
-                if (p_.faceSize(f) != 3) {
+            for (int f : p_.facesOfEdge(i)) {
+                const int j = p_.cornerOfEdge(f, i);
+                if (!inFour(p_.faceSize(f))) {
                     *out++ = interior(f, j);
                     continue;
                 }
@@ -301,18 +294,22 @@ private:
 
     // Halves of a parent edge keep its boundary / non-manifold / seam flags; interior edges have
     // two faces of one parent: none. Vertex points keep their parent's flags, edge points take
-    // their edge's, face points none.
+    // their edge's, face points none. When triangles split into quads every child is a quad, so
+    // no seam is left.
     void flags() {
         c_.edgeFlags.assign(c_.numEdges(), 0);
         c_.vertFlags.assign(c_.numVertices, 0);
+        const bool seamsStay = num_.triangleSplit == TriangleSplit::FourTriangles;
+        const uint8_t edgeKept = seamsStay ? 0xff : uint8_t(~kEdgeSeam);
+        const uint8_t vertexKept = seamsStay ? 0xff : uint8_t(~kVertexSeam);
         forEach(p_.numEdges(), [&](int e) {
-            const uint8_t f = p_.edgeFlags[e];
+            const uint8_t f = p_.edgeFlags[e] & edgeKept;
             c_.edgeFlags[2 * e] = c_.edgeFlags[2 * e + 1] = f;
             c_.vertFlags[num_.edgePoint(e)] = (f & kEdgeBoundary ? kVertexBoundary : 0) |
                                               (f & kEdgeNonManifold ? kVertexNonManifold : 0) |
                                               (f & kEdgeSeam ? kVertexSeam : 0);
         });
-        forEach(p_.numVertices, [&](int v) { c_.vertFlags[num_.vertexPoint(v)] = p_.vertFlags[v]; });
+        forEach(p_.numVertices, [&](int v) { c_.vertFlags[num_.vertexPoint(v)] = p_.vertFlags[v] & vertexKept; });
         c_.edgeSharpness.assign(c_.numEdges(), 0.0f);
         c_.vertSharpness.assign(c_.numVertices, 0.0f);
     }
@@ -335,7 +332,7 @@ void inheritSharpness(const Topology& p, const ChildNumbering& num, CreaseMethod
         childSharpness.resize(n);
         childEdgeSharpnessAtVertex(p, v, method, childSharpness.data());
         for (int i = 0; i < n; ++i) {
-            const int e = p.vertEdges[p.vertEdgeOffsets[v] + i];
+            const int e = p.edgesOfVertex(v)[i];
             c.edgeSharpness[2 * e + (p.edgeVerts[2 * e] == v ? 0 : 1)] = childSharpness[i];
         }
     }

@@ -4,10 +4,11 @@
 #include <string>
 
 #include <tbb/parallel_invoke.h>
-#include <tbb/task_arena.h>
 
+#include "far/internal/level_estimate.h"
 #include "far/internal/refine_topology.h"
 #include "far/internal/rules.h"
+#include "far/internal/scheme.h"
 #include "far/internal/stencil_table_double.h"
 #include "far/internal/topology_builder.h"
 
@@ -29,66 +30,7 @@ const Topology& Refiner::level(int L) const {
 }
 
 std::size_t Refiner::estimateLevelBytes(int L) const {
-    const Topology& p = levels_.at(L - 1);
-    std::size_t faces = 0, corners = 0, entries = 0, facePoints = 0;
-    for (int f = 0; f < p.numFaces(); ++f) {
-        const std::size_t n = p.faceSize(f);
-        faces += n == 3 ? 4 : n;
-        corners += n == 3 ? 12 : 4 * n;
-        facePoints += n == 3 ? 0 : 1;
-        // Each face contributes its corners to its face point and to the masks of its edges'
-        // and vertices' points.
-        entries += n + 2 * n * n;
-    }
-    // A faces-only level has no edges yet: one per corner bounds them (an open mesh's count).
-    const std::size_t parentEdges = p.edgeVerts.empty() ? p.faceVerts.size() : std::size_t(p.numEdges());
-    const std::size_t edges = 2 * parentEdges + corners / 4;
-    const std::size_t vertices = facePoints + parentEdges + p.numVertices;
-    entries += 4 * parentEdges + p.numVertices;
-    if (options_.scheme == Scheme::CatmarkButterfly) {
-        // Zorin's edge masks read the whole ring of an extraordinary vertex with triangles only:
-        // each of its K edges' masks has up to K + 1 more entries than counted above.
-        std::vector<std::size_t> corners(std::size_t(p.numVertices), 0);
-        std::vector<uint8_t> touchesQuad(std::size_t(p.numVertices), 0);
-        for (int f = 0; f < p.numFaces(); ++f)
-            for (int i = p.faceOffsets[f]; i < p.faceOffsets[f + 1]; ++i) {
-                ++corners[std::size_t(p.faceVerts[i])];
-                touchesQuad[std::size_t(p.faceVerts[i])] |= p.faceSize(f) != 3;
-            }
-        auto extraordinary = [&](int v, std::size_t k) { return !touchesQuad[std::size_t(v)] && k >= 3 && k != 6; };
-        if (p.vertEdgeOffsets.size() == std::size_t(p.numVertices) + 1) {
-            // Zorin's rule applies where both ends have triangles only, at an end whose faces
-            // close a manifold fan.
-            for (int e = 0; e < p.numEdges(); ++e) {
-                const int a = p.edgeVerts[2 * e], b = p.edgeVerts[2 * e + 1];
-                if (touchesQuad[std::size_t(a)] || touchesQuad[std::size_t(b)]) continue;
-                for (int v : {a, b}) {
-                    const std::size_t k = std::size_t(p.vertexEdgeCount(v));
-                    if (!(p.vertFlags[std::size_t(v)] & (kVertexBoundary | kVertexNonManifold)) && extraordinary(v, k))
-                        entries += k + 1;
-                }
-            }
-        } else {
-            // Faces only: a vertex has at most one edge more than it has corners.
-            for (int v = 0; v < p.numVertices; ++v) {
-                const std::size_t k = corners[std::size_t(v)] + 1;
-                if (extraordinary(v, k)) entries += k * (k + 1);
-            }
-        }
-    }
-    const std::size_t topologyBytes = corners * 16 + edges * 25 + vertices * 22 + faces * 5;
-    // An index per entry and two offsets per stencil (weights are pooled), twice over: the parts
-    // built by other threads are copied into the table (buildLevelStencils).
-    const std::size_t tableBytes = 2 * (entries * 4 + vertices * 8);
-    const std::size_t outputBytes = vertices * 3 * sizeof(float);
-    // Per thread, a sparse accumulator over the parent's vertices; for Schaefer-Warren, each
-    // parent vertex's two unzipped copies (one entry per network neighbour, two per vertex).
-    const std::size_t threads = std::size_t(tbb::this_task_arena::max_concurrency());
-    const std::size_t scratchBytes = threads * std::size_t(p.numVertices) * 16;
-    const std::size_t unzipBytes = options_.scheme == Scheme::SchaeferWarren
-                                       ? 2 * (std::size_t(p.numVertices) * (8 + 12) + 2 * parentEdges * 12)
-                                       : 0;
-    return topologyBytes + tableBytes + outputBytes + scratchBytes + unzipBytes;
+    return quadtri::estimateLevelBytes(levels_.at(L - 1), rulesOf(options_.scheme));
 }
 
 std::size_t Refiner::bytes() const {
@@ -110,7 +52,8 @@ std::size_t doubleBytes(const StencilTable& t) {
 void Refiner::completeLevel(int L) {
     if (detail_[L] == TopologyDetail::Full) return;
     const Topology& parent = levels_[L - 1];
-    levels_[L] = refineTopology(parent, numberChildren(parent), options_.creaseMethod, TopologyDetail::Full);
+    levels_[L] = refineTopology(parent, numberChildren(parent, rulesOf(options_.scheme).triangleSplit()),
+                                options_.creaseMethod, TopologyDetail::Full);
     detail_[L] = TopologyDetail::Full;
 }
 
@@ -123,7 +66,7 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
         if (held > options_.memoryBudgetBytes || estimate > options_.memoryBudgetBytes - held)
             throw MemoryBudgetError("level " + std::to_string(L), held + estimate, held, options_.memoryBudgetBytes);
         const Topology& parent = levels_.back();
-        const ChildNumbering numbering = numberChildren(parent);
+        const ChildNumbering numbering = numberChildren(parent, rulesOf(options_.scheme).triangleSplit());
         const TopologyDetail detail = L == maxLevel ? lastLevel : TopologyDetail::Full;
         // Both read only the parent level: build them side by side.
         StencilTable table;

@@ -1,8 +1,7 @@
 #include "far/internal/schaefer_warren.h"
 
-#include "far/internal/rules.h"
+#include "far/internal/level_estimate.h"
 #include "far/internal/unzip.h"
-#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -12,23 +11,23 @@ UnzippedLevel::UnzippedLevel(const Topology& t)
       quadCopies(unzipStencils(t, Piece::Quad)),
       faceTouches(t.numFaces(), 0) {
     for (int f = 0; f < t.numFaces(); ++f)
-        for (int c = t.faceOffsets[f]; c < t.faceOffsets[f + 1]; ++c)
-            if (quadCopies.sizes[t.faceVerts[c]] > 1) faceTouches[f] = 1;
+        for (int v : t.verticesOfFace(f))
+            if (quadCopies.sizes[v] > 1) faceTouches[f] = 1;
 }
 
 SchaeferWarrenMasks::SchaeferWarrenMasks(const Topology& topology, const UnzippedLevel& unzipped,
                                          SparseAccumulator& accumulator)
-    : t_(topology), u_(unzipped), acc_(accumulator) {}
+    : StamLoopMasks(topology, accumulator), u_(unzipped) {}
 
 bool SchaeferWarrenMasks::touchesEdge(int e) const {
-    for (int k = t_.edgeFaceOffsets[e]; k < t_.edgeFaceOffsets[e + 1]; ++k)
-        if (u_.faceTouches[t_.edgeFaces[k]]) return true;
+    for (int f : t_.facesOfEdge(e))
+        if (u_.faceTouches[f]) return true;
     return false;
 }
 
 bool SchaeferWarrenMasks::touchesVertex(int v) const {
-    for (int k = t_.vertFaceOffsets[v]; k < t_.vertFaceOffsets[v + 1]; ++k)
-        if (u_.faceTouches[t_.vertFaces[k]]) return true;
+    for (int f : t_.facesOfVertex(v))
+        if (u_.faceTouches[f]) return true;
     return false;
 }
 
@@ -46,8 +45,8 @@ void SchaeferWarrenMasks::addPoint(Point p, bool quad, double scale) {
         addCopy(t_.edgeVerts[2 * p.index + 1], quad, 0.5 * scale);
         break;
     case Point::Face: {  // only quads and n-gons have centres
-        const int b = t_.faceOffsets[p.index], n = t_.faceSize(p.index);
-        for (int i = 0; i < n; ++i) addCopy(t_.faceVerts[b + i], true, scale / n);
+        const IndexSpan corners = t_.verticesOfFace(p.index);
+        for (int v : corners) addCopy(v, true, scale / corners.size());
         break;
     }
     }
@@ -63,30 +62,16 @@ void SchaeferWarrenMasks::addCentroid(const Point* c, int count, double scale) {
     }
 }
 
-int SchaeferWarrenMasks::cornerOfEdge(int f, int e) const {
-    int i = 0;
-    while (t_.faceEdges[t_.faceOffsets[f] + i] != e) ++i;
-    return i;
-}
-
-int SchaeferWarrenMasks::cornerOfVertex(int f, int v) const {
-    int i = 0;
-    while (t_.faceVerts[t_.faceOffsets[f] + i] != v) ++i;
-    return i;
-}
-
-int SchaeferWarrenMasks::edgeAt(int f, int corner) const {
-    const int n = t_.faceSize(f);
-    return t_.faceEdges[t_.faceOffsets[f] + (corner % n + n) % n];
-}
-
-// The n child quads around the centre, each weighing ½ (s = n/2).
+// The n child quads around the centre, each weighing ½ (s = n/2). Faces without a vertex on the
+// network keep the centroid.
 void SchaeferWarrenMasks::facePoint(int f, double scale) {
-    const int n = t_.faceSize(f);
+    if (!touchesFace(f)) return centroid(f, scale);
+    const IndexSpan corners = t_.verticesOfFace(f);
+    const int n = corners.size();
     const Point centre{Point::Face, f};
     for (int i = 0; i < n; ++i) {
-        const Point quad[4] = {centre, {Point::Edge, edgeAt(f, i - 1)},
-                               {Point::Vertex, t_.faceVerts[t_.faceOffsets[f] + i]}, {Point::Edge, edgeAt(f, i)}};
+        const Point quad[4] = {centre, {Point::Edge, t_.edgeOfCorner(f, i - 1)}, {Point::Vertex, corners[i]},
+                               {Point::Edge, t_.edgeOfCorner(f, i)}};
         addCentroid(quad, 4, scale / n);
     }
 }
@@ -94,13 +79,15 @@ void SchaeferWarrenMasks::facePoint(int f, double scale) {
 // Each quad-like face gives two child quads (½ each), each triangle three child triangles (⅓
 // each): s = number of faces. Next to an n-gon the child quad's corner diagonal to the midpoint
 // is replaced by the n-gon's centre, which gives Catmull-Clark's edge rule there.
-void SchaeferWarrenMasks::edgePoint(int e, double scale) {
+void SchaeferWarrenMasks::smoothEdgePoint(int e, double scale) {
+    if (!touchesEdge(e)) return StamLoopMasks::smoothEdgePoint(e, scale);
     const double s = t_.edgeFaceCount(e);
     const Point mid{Point::Edge, e};
-    for (int k = t_.edgeFaceOffsets[e]; k < t_.edgeFaceOffsets[e + 1]; ++k) {
-        const int f = t_.edgeFaces[k], n = t_.faceSize(f), i = cornerOfEdge(f, e), b = t_.faceOffsets[f];
-        const Point here{Point::Vertex, t_.faceVerts[b + i]}, next{Point::Vertex, t_.faceVerts[b + (i + 1) % n]};
-        const Point prevEdge{Point::Edge, edgeAt(f, i - 1)}, nextEdge{Point::Edge, edgeAt(f, i + 1)};
+    for (int f : t_.facesOfEdge(e)) {
+        const IndexSpan corners = t_.verticesOfFace(f);
+        const int n = corners.size(), i = t_.cornerOfEdge(f, e);
+        const Point here{Point::Vertex, corners[i]}, next{Point::Vertex, corners[(i + 1) % n]};
+        const Point prevEdge{Point::Edge, t_.edgeOfCorner(f, i - 1)}, nextEdge{Point::Edge, t_.edgeOfCorner(f, i + 1)};
         if (n == 3) {
             const Point a[3] = {mid, here, prevEdge}, c[3] = {mid, next, nextEdge}, centre[3] = {mid, nextEdge, prevEdge};
             for (const Point* tri : {a, c, centre}) addCentroid(tri, 3, scale / (3 * s));
@@ -115,16 +102,17 @@ void SchaeferWarrenMasks::edgePoint(int e, double scale) {
 }
 
 // avg over the child faces at v, then v2 = v0 + (1 + η) 2sα (avg − v0) with α = 1/(1 + nE/2 + nQ/4).
-void SchaeferWarrenMasks::vertexPoint(int v, double scale) {
+void SchaeferWarrenMasks::smoothVertexPoint(int v, double scale) {
+    if (!touchesVertex(v)) return StamLoopMasks::smoothVertexPoint(v, scale);
     const VertexFaceCounts counts = countVertexFaces(t_, v);
     const int nE = t_.vertexEdgeCount(v);
     const double s = 0.5 * counts.quads + counts.triangles / 3.0;
     const double alpha = 1.0 / (1.0 + 0.5 * nE + 0.25 * counts.quads);
     const double k = (1.0 + stamLoopEta(nE, counts.quads, counts.triangles)) * 2.0 * s * alpha;
     const Point vertex{Point::Vertex, v};
-    for (int j = t_.vertFaceOffsets[v]; j < t_.vertFaceOffsets[v + 1]; ++j) {
-        const int f = t_.vertFaces[j], i = cornerOfVertex(f, v);
-        const Point next{Point::Edge, edgeAt(f, i)}, prev{Point::Edge, edgeAt(f, i - 1)};
+    for (int f : t_.facesOfVertex(v)) {
+        const int i = t_.cornerOfVertex(f, v);
+        const Point next{Point::Edge, t_.edgeOfCorner(f, i)}, prev{Point::Edge, t_.edgeOfCorner(f, i - 1)};
         if (t_.faceSize(f) == 3) {
             const Point tri[3] = {vertex, next, prev};
             addCentroid(tri, 3, scale * k / (3 * s));
@@ -134,6 +122,36 @@ void SchaeferWarrenMasks::vertexPoint(int v, double scale) {
         }
     }
     acc_.add(v, scale * (1.0 - k));
+}
+
+namespace {
+
+class SchaeferWarrenRules : public SchemeRules {
+public:
+    const char* name() const override { return "schaefer-warren"; }
+    const char* description() const override {
+        return "Stam-Loop plus unzipping of the tri/quad network: C2 across the ordinary seam";
+    }
+    bool regularMasksApply() const override { return true; }
+    std::unique_ptr<SchemeLevel> prepareLevel(const Topology& parent, const Options&) const override {
+        return std::make_unique<UnzippedLevel>(parent);
+    }
+    std::unique_ptr<SchemeMasks> makeMasks(const Topology& parent, const Options&, const SchemeLevel* prepared,
+                                           SparseAccumulator& accumulator) const override {
+        return std::make_unique<SchaeferWarrenMasks>(parent, static_cast<const UnzippedLevel&>(*prepared), accumulator);
+    }
+    // Each parent vertex's two copies: one entry per network neighbour (at most two per edge)
+    // and the vertex itself, with an offset and a size each.
+    std::size_t extraLevelBytes(const Topology& parent) const override {
+        return 2 * (std::size_t(parent.numVertices) * (8 + 12) + 2 * edgeCountBound(parent) * 12);
+    }
+};
+
+}  // namespace
+
+const SchemeRules& schaeferWarrenRules() {
+    static const SchaeferWarrenRules rules;
+    return rules;
 }
 
 }  // namespace v0

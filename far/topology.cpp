@@ -2,6 +2,7 @@
 #include <quadtri/far/topology.h>
 
 #include "far/internal/face_loops.h"
+#include "far/internal/scheme.h"
 #include "far/internal/topology_builder.h"
 
 #include <algorithm>
@@ -10,16 +11,6 @@
 
 namespace quadtri {
 inline namespace v0 {
-
-const char* toString(Scheme scheme) {
-    switch (scheme) {
-    case Scheme::Bilinear: return "bilinear";
-    case Scheme::StamLoop: return "stam-loop";
-    case Scheme::SchaeferWarren: return "schaefer-warren";
-    case Scheme::CatmarkButterfly: return "catmark-butterfly";
-    }
-    return "?";
-}
 
 const char* toString(BoundaryInterpolation boundary) {
     switch (boundary) {
@@ -62,8 +53,8 @@ std::size_t bytesOf(const Topology& t) {
 
 VertexFaceCounts countVertexFaces(const Topology& t, int v) {
     VertexFaceCounts counts;
-    for (int i = t.vertFaceOffsets[v]; i < t.vertFaceOffsets[v + 1]; ++i) {
-        if (t.faceSize(t.vertFaces[i]) == 3)
+    for (int f : t.facesOfVertex(v)) {
+        if (t.faceSize(f) == 3)
             ++counts.triangles;
         else
             ++counts.quads;
@@ -117,28 +108,23 @@ void buildEdges(Topology& t) {
     }
 }
 
-// Corner index of vertex v in face f.
-int cornerOf(const Topology& t, int f, int v) {
-    int c = t.faceOffsets[f];
-    while (t.faceVerts[c] != v) ++c;
-    return c;
-}
+// Face f's edge from v to its next corner.
+int edgeFrom(const Topology& t, int f, int v) { return t.edgeOfCorner(f, t.cornerOfVertex(f, v)); }
 
 void flagEdges(Topology& t) {
     const int ne = t.numEdges();
     t.edgeFlags.assign(ne, 0);
     for (int e = 0; e < ne; ++e) {
-        const int nf = t.edgeFaceCount(e);
-        const int* faces = t.edgeFaces.data() + t.edgeFaceOffsets[e];
+        const IndexSpan faces = t.facesOfEdge(e);
+        const int nf = faces.size();
         if (nf == 1) {
             t.edgeFlags[e] |= kEdgeBoundary;
         } else if (nf > 2) {
             t.edgeFlags[e] |= kEdgeNonManifold;
         } else {
             // Two faces crossing the edge the same way disagree on orientation: not a manifold pair.
-            const int c0 = cornerOf(t, faces[0], t.edgeVerts[2 * e]);
-            const int c1 = cornerOf(t, faces[1], t.edgeVerts[2 * e]);
-            const bool sameWay = (t.faceEdges[c0] == e) == (t.faceEdges[c1] == e);
+            const int a = t.edgeVerts[2 * e];
+            const bool sameWay = (edgeFrom(t, faces[0], a) == e) == (edgeFrom(t, faces[1], a) == e);
             if (sameWay || faces[0] == faces[1]) {
                 t.edgeFlags[e] |= kEdgeNonManifold;
             } else if ((t.faceSize(faces[0]) == 3) != (t.faceSize(faces[1]) == 3)) {
@@ -150,14 +136,11 @@ void flagEdges(Topology& t) {
 
 // The faces of a manifold vertex form one fan: walk it face to face across manifold edges.
 bool isSingleFan(const Topology& t, int v, int boundaryEdges) {
-    const int nf = t.vertexFaceCount(v);
+    const IndexSpan faces = t.facesOfVertex(v);
+    const int nf = faces.size();
     if (nf == 0) return true;
-    const int* faces = t.vertFaces.data() + t.vertFaceOffsets[v];
-    auto outgoing = [&](int f) { return t.faceEdges[cornerOf(t, f, v)]; };
-    auto incoming = [&](int f) {
-        const int c = cornerOf(t, f, v);
-        return t.faceEdges[c == t.faceOffsets[f] ? t.faceOffsets[f + 1] - 1 : c - 1];
-    };
+    auto outgoing = [&](int f) { return edgeFrom(t, f, v); };
+    auto incoming = [&](int f) { return t.edgeOfCorner(f, t.cornerOfVertex(f, v) - 1); };
     int start = faces[0];
     if (boundaryEdges == 2) {  // start at the face whose incoming edge is on the boundary
         for (int i = 0; i < nf; ++i)
@@ -168,7 +151,7 @@ bool isSingleFan(const Topology& t, int v, int boundaryEdges) {
         ++visited;
         const int e = outgoing(f);
         if (t.edgeFlags[e] & kEdgeBoundary) break;
-        const int* ef = t.edgeFaces.data() + t.edgeFaceOffsets[e];
+        const IndexSpan ef = t.facesOfEdge(e);
         f = ef[0] == f ? ef[1] : ef[0];
         if (f == start) break;
     }
@@ -181,8 +164,8 @@ void flagVertices(Topology& t) {
     for (int v = 0; v < nv; ++v) {
         int boundary = 0;
         uint8_t flags = 0;
-        for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i) {
-            const uint8_t ef = t.edgeFlags[t.vertEdges[i]];
+        for (int e : t.edgesOfVertex(v)) {
+            const uint8_t ef = t.edgeFlags[e];
             boundary += (ef & kEdgeBoundary) ? 1 : 0;
             if (ef & kEdgeNonManifold) flags |= kVertexNonManifold;
             if (ef & kEdgeSeam) flags |= kVertexSeam;
@@ -242,8 +225,8 @@ void completeTopology(Topology& t) {
 
 int findEdge(const Topology& t, int a, int b) {
     if (t.vertexEdgeCount(a) > t.vertexEdgeCount(b)) std::swap(a, b);  // scan the shorter list
-    for (int i = t.vertEdgeOffsets[a]; i < t.vertEdgeOffsets[a + 1]; ++i)
-        if (t.otherVertex(t.vertEdges[i], a) == b) return t.vertEdges[i];
+    for (int e : t.edgesOfVertex(a))
+        if (t.otherVertex(e, a) == b) return e;
     return -1;
 }
 
@@ -277,12 +260,19 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     std::vector<int> sizes, firstFace(size_t(desc.numFaces) + 1, 0);
     sizes.reserve(size_t(desc.numFaces));
     FaceLoopSplitter splitter(desc.numVertices);
+    const SchemeRules& rules = rulesOf(options.scheme);
     const int* verts = desc.faceVertIndices;
     for (int f = 0; f < desc.numFaces; ++f) {
         const int n = desc.numVertsPerFace[f];
         const FaceLoops loops = splitter.split(verts, n, t.faceVerts, sizes);
         verts += n;
         firstFace[size_t(f) + 1] = int(sizes.size());
+        if (!rules.acceptsNonTriangles())
+            for (int i = firstFace[size_t(f)]; i < firstFace[size_t(f) + 1]; ++i)
+                if (sizes[size_t(i)] != 3)
+                    throw TopologyError({TopologyDiagnostic::Component::Face, f, -1,
+                                         "has " + std::to_string(sizes[size_t(i)]) + " corners; the " +
+                                             rules.name() + " scheme takes triangles only"});
         if (warnings && (loops.repeated >= 0 || loops.loops == 0))
             warnings->push_back({TopologyDiagnostic::Component::Face, f, loops.repeated,
                                  describeLoops(loops)});
@@ -325,8 +315,7 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
             // A non-manifold crease (two opposing non-manifold edges carrying extra fins, no
             // boundary) stays a crease; every other non-manifold vertex becomes a corner.
             int nonManifoldEdges = 0;
-            for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i)
-                nonManifoldEdges += (t.edgeFlags[t.vertEdges[i]] & kEdgeNonManifold) ? 1 : 0;
+            for (int e : t.edgesOfVertex(v)) nonManifoldEdges += (t.edgeFlags[e] & kEdgeNonManifold) ? 1 : 0;
             const bool nonManifoldCrease = nonManifoldEdges == 2 && !(flags & kVertexBoundary) &&
                                            t.vertexFaceCount(v) > t.vertexEdgeCount(v);
             if (!nonManifoldCrease) t.vertSharpness[v] = kInfiniteSharpness;
@@ -336,7 +325,7 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     if (options.boundary == BoundaryInterpolation::None) {
         for (int v = 0; v < t.numVertices; ++v) {
             if (!(t.vertFlags[v] & kVertexBoundary) || t.vertSharpness[v] >= kInfiniteSharpness) continue;
-            for (int i = t.vertFaceOffsets[v]; i < t.vertFaceOffsets[v + 1]; ++i) t.faceHole[t.vertFaces[i]] = 1;
+            for (int f : t.facesOfVertex(v)) t.faceHole[f] = 1;
         }
     }
     return t;

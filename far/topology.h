@@ -71,6 +71,33 @@ struct Topology {
     // The other endpoint of edge e seen from vertex v.
     int otherVertex(int e, int v) const { return edgeVerts[2 * e] == v ? edgeVerts[2 * e + 1] : edgeVerts[2 * e]; }
     int numFaceVertices() const { return int(faceVerts.size()); }
+
+    // Incidences as spans: a face's corners and its edges (entry i from corner i to i + 1), an
+    // edge's faces, a vertex's faces and edges.
+    IndexSpan verticesOfFace(int f) const { return span(faceVerts, faceOffsets, f); }
+    IndexSpan edgesOfFace(int f) const { return span(faceEdges, faceOffsets, f); }
+    IndexSpan facesOfEdge(int e) const { return span(edgeFaces, edgeFaceOffsets, e); }
+    IndexSpan facesOfVertex(int v) const { return span(vertFaces, vertFaceOffsets, v); }
+    IndexSpan edgesOfVertex(int v) const { return span(vertEdges, vertEdgeOffsets, v); }
+    // Position of vertex v (edge e) among face f's corners (edges); f must hold it, as a valid
+    // face holds each once.
+    int cornerOfVertex(int f, int v) const { return positionIn(verticesOfFace(f), v); }
+    int cornerOfEdge(int f, int e) const { return positionIn(edgesOfFace(f), e); }
+    // Face f's edge from corner i to corner i + 1, i taken cyclically (i in [-n, 2n)).
+    int edgeOfCorner(int f, int i) const {
+        const int n = faceSize(f);
+        return faceEdges[faceOffsets[f] + (i < 0 ? i + n : i >= n ? i - n : i)];
+    }
+
+private:
+    static IndexSpan span(const std::vector<int>& list, const std::vector<int>& offsets, int i) {
+        return {list.data() + offsets[i], list.data() + offsets[i + 1]};
+    }
+    static int positionIn(IndexSpan s, int x) {
+        int i = 0;
+        while (s[i] != x) ++i;
+        return i;
+    }
 };
 
 // How much of a child level to build. A level that is not refined further needs only its faces

@@ -18,8 +18,8 @@ namespace {
 bool keepsOnePosition(const Topology& t, int v) {
     int sharp = 0;
     bool semiSharp = false;
-    for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i) {
-        const float s = t.edgeSharpness[t.vertEdges[i]];
+    for (int e : t.edgesOfVertex(v)) {
+        const float s = t.edgeSharpness[e];
         sharp += isSharp(s) ? 1 : 0;
         semiSharp = semiSharp || isSemiSharp(s);
     }
@@ -43,8 +43,7 @@ StencilTableD unzipStencils(const Topology& t, Piece piece) {
             table.sizes.push_back(1);
             continue;
         }
-        for (int i = t.vertEdgeOffsets[v]; i < t.vertEdgeOffsets[v + 1]; ++i) {
-            const int e = t.vertEdges[i];
+        for (int e : t.edgesOfVertex(v)) {
             if (!isNetworkEdge(t, e)) continue;
             table.indices.push_back(t.otherVertex(e, v));
             table.weights.push_back(sign / 48.0);

@@ -68,6 +68,25 @@ TEST(RefineTopology, ChildLevelsEqualTheGenericBuilder) {
     }
 }
 
+// A scheme may split triangles into three quads around a face point (TriangleSplit::ThreeQuads,
+// as Catmull-Clark does): every face then has a face point and every child is a quad, and the
+// child level built by construction still equals the generic builder's.
+TEST(RefineTopology, TrianglesSplitIntoThreeQuadsEqualTheGenericBuilder) {
+    for (const std::string& name : allMeshes()) {
+        const io::ObjMesh mesh = io::readObj(meshPath(name));
+        Refiner refiner(mesh.descriptor(), mesh.applyTags(Options()));
+        const Topology& p = refiner.level(0);
+        const ChildNumbering num = numberChildren(p, TriangleSplit::ThreeQuads);
+        ASSERT_EQ(num.numFacePoints, p.numFaces()) << name;
+        const Topology c = refineTopology(p, num, CreaseMethod::Uniform);
+        int corners = 0;
+        for (int f = 0; f < p.numFaces(); ++f) corners += p.faceSize(f);
+        ASSERT_EQ(c.numFaces(), corners) << name;
+        for (int f = 0; f < c.numFaces(); ++f) ASSERT_EQ(c.faceSize(f), 4) << name << " child face " << f;
+        expectSameConnectivity(c, name + " split into quads");
+    }
+}
+
 // The halves of parent edge e are child edges 2e (at edgeVerts[2e]) and 2e+1, carrying the
 // decayed sharpness of their end.
 TEST(RefineTopology, HalvesOfParentEdgesCarryTheirSharpness) {

@@ -28,11 +28,20 @@ CLI::Validator oneOf(const std::map<std::string, T>& names, const std::string& w
         "{" + list + "}");
 }
 
+// "Subdivision scheme (default ...)" and one line per scheme.
+std::string schemeHelp() {
+    std::string help = std::string("Subdivision scheme (default ") + toString(Options().scheme) + "):";
+    for (Scheme scheme : allSchemes()) help += std::string("\n  ") + toString(scheme) + ": " + describe(scheme);
+    return help;
+}
+
 void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
-    static const std::map<std::string, Scheme> schemes{{"schaefer-warren", Scheme::SchaeferWarren},
-                                                       {"stam-loop", Scheme::StamLoop},
-                                                       {"bilinear", Scheme::Bilinear},
-                                                       {"catmark-butterfly", Scheme::CatmarkButterfly}};
+    // The registered schemes (far/schemes.cpp), by name.
+    static const std::map<std::string, Scheme> schemes = [] {
+        std::map<std::string, Scheme> byName;
+        for (Scheme scheme : allSchemes()) byName.emplace(toString(scheme), scheme);
+        return byName;
+    }();
     static const std::map<std::string, BoundaryInterpolation> boundaries{
         {"edge-only", BoundaryInterpolation::EdgeOnly},
         {"edge-and-corner", BoundaryInterpolation::EdgeAndCorner},
@@ -42,7 +51,7 @@ void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
     cmd.add_option("input", args.input, "Input OBJ file")->required();
     cmd.add_option_function<std::string>(
            "--scheme", [&args](const std::string& s) { args.scheme = schemes.at(s); },
-           "Subdivision scheme (default schaefer-warren)")
+           schemeHelp())
         ->check(oneOf(schemes, "scheme"));
     cmd.add_option_function<std::string>(
            "--boundary", [&args](const std::string& s) { args.boundary = boundaries.at(s); },

@@ -1,14 +1,14 @@
 // Catmull-Clark on quads, Butterfly on triangles (Boumzaid, Lanquetin, Neveu and Destelle 2011;
 // derivation and choices in docs/catmark_butterfly/README.md). The quad side is Catmull-Clark and
-// comes from the Stam-Loop masks, which equal it wherever no triangle is involved; this class
-// builds every mask that touches a triangle:
+// comes from the Stam-Loop masks (the base class), which equal it wherever no triangle is
+// involved; this class builds every mask that touches a triangle:
 //   - vertices with triangles only never move (interpolation), whatever their rule;
 //   - edges between two triangles: Butterfly (½, ½, ⅛, ⅛, −1/16 × 4), Zorin's modified rule at
 //     interior extraordinary endpoints, the seam rules of eqs. 11/12 (seam → column 1) and the
 //     half Butterfly (column 1 → column 2) where the plain rule would read the seam;
 //   - seam edges (a triangle and a quad): eq. 14 (missing wings reflected); smooth seam vertices
 //     of the regular seam (2 quads, 3 triangles): eq. 13. Irregular smooth seam vertices keep
-//     Stam-Loop's mixed vertex rule (rules.cpp), the one of the choices measured in the docs whose
+//     Stam-Loop's mixed vertex rule (stam_loop.cpp), the one of the choices measured in the docs whose
 //     normal jumps shrink fastest;
 //   - sharp edges and creases whose faces are triangles, and crease vertices on the seam: curve
 //     rules reproducing cubics under the curve quasi-interpolant (4-point on the triangle side,
@@ -19,29 +19,26 @@
 #include <cstdint>
 #include <vector>
 
-#include "far/internal/crease.h"
-#include "far/internal/sparse_accumulator.h"
-#include <quadtri/far/topology.h>
+#include "far/internal/stam_loop.h"
 
 namespace quadtri {
 inline namespace v0 {
 
-class CatmarkButterflyMasks {
+class CatmarkButterflyMasks : public StamLoopMasks {
 public:
     CatmarkButterflyMasks(const Topology& topology, SparseAccumulator& accumulator);
 
-    // Whether this class builds the child's mask; otherwise the shared (Catmull-Clark, and at
-    // irregular seam vertices Stam-Loop) rule of rules.cpp applies.
+    void smoothEdgePoint(int edge, double scale) override;
+    void sharpEdgePoint(int edge, double scale) override;
+    void vertexPoint(int vertex, VertexRule rule, const float* edgeSharpness, double scale) override;
+
+private:
+    // Whether this class builds the child's mask; otherwise the base class's (Catmull-Clark, and
+    // at irregular seam vertices Stam-Loop, and the shared sharp rules) applies.
     bool touchesEdge(int edge) const;        // smooth rule: a triangle on the edge
     bool touchesSharpEdge(int edge) const;   // sharp rule: triangles only on the edge
     bool touchesVertex(int vertex, VertexRule rule) const;
 
-    void smoothEdgePoint(int edge, double scale);
-    void sharpEdgePoint(int edge, double scale);
-    // `edgeSharpness` in vertEdges order, as the crease rule of rules.cpp reads it.
-    void vertexPoint(int vertex, VertexRule rule, const float* edgeSharpness, double scale);
-
-private:
     // RegularSeam: a closed fan of two quads and three triangles with two seam edges, the seam of
     // split_plane and the only configuration eqs. 11-14 were derived for.
     enum class Kind : uint8_t { QuadOnly, Seam, RegularSeam, TriangleOnly };
@@ -76,8 +73,6 @@ private:
     bool cleanSide(int triangle, int a, int b) const;
     double seamWeightOfSide(int triangle, int a, int b) const;
 
-    const Topology& t_;
-    SparseAccumulator& acc_;
     std::vector<Kind> kind_;
     std::vector<uint8_t> sharpEdges_;  // per vertex: its sharp edges, counted up to 3
     // Zorin's rule: a centre's neighbours in fan order (a long ring kept for the next edge of
@@ -89,6 +84,8 @@ private:
     std::vector<int> longRing_;
     std::vector<std::vector<double>> weightsByValence_;
 };
+
+const SchemeRules& catmarkButterflyRules();
 
 }  // namespace v0
 }  // namespace quadtri

@@ -1,5 +1,5 @@
-// Uniform refinement of one level's topology: triangles split in 4, quads and n-gons into
-// quads around their centroid. Child sharpness decays from the parent (docs/schemes/creases.md,
+// Uniform refinement of one level's topology: triangles split in 4 (or into 3 quads, as the
+// scheme says), quads and n-gons into quads around their centroid. Child sharpness decays from the parent (docs/schemes/creases.md,
 // §2).
 #pragma once
 
@@ -10,20 +10,32 @@
 namespace quadtri {
 inline namespace v0 {
 
-// Where the children of a parent level's components land in the child level's vertex list:
-// face points of non-triangle faces first, then edge points, then vertex points.
-struct ChildNumbering {
-    std::vector<int> facePoint;  // per parent face, -1 for triangles
-    int numFacePoints = 0;
-    int numEdges = 0;
-    int edgePoint(int e) const { return numFacePoints + e; }
-    int vertexPoint(int v) const { return numFacePoints + numEdges + v; }
+// How a triangle of the parent level is split (SchemeRules::triangleSplit). Quads and n-gons
+// always become quads around a face point.
+enum class TriangleSplit {
+    FourTriangles,  // three corner triangles and the middle one; no face point
+    ThreeQuads,     // three quads around a face point, as n-gons are (Catmull-Clark)
 };
 
-ChildNumbering numberChildren(const Topology& parent);
+// Where the children of a parent level's components land in the child level's vertex list:
+// face points first (of every face that is split around one), then edge points, then vertex
+// points.
+struct ChildNumbering {
+    std::vector<int> facePoint;  // per parent face, -1 for a triangle split in four
+    int numFacePoints = 0;
+    int numEdges = 0;
+    TriangleSplit triangleSplit = TriangleSplit::FourTriangles;
+    int edgePoint(int e) const { return numFacePoints + e; }
+    int vertexPoint(int v) const { return numFacePoints + numEdges + v; }
+    // Whether a face of this many corners splits into four triangles (else into quads around a
+    // face point).
+    bool splitsInFour(int faceSize) const { return faceSize == 3 && triangleSplit == TriangleSplit::FourTriangles; }
+};
 
-// The child level: faces (children of hole faces stay holes) and, with TopologyDetail::Full,
-// connectivity and sharpness.
+ChildNumbering numberChildren(const Topology& parent, TriangleSplit split = TriangleSplit::FourTriangles);
+
+// The child level, split as `numbering` says: faces (children of hole faces stay holes) and,
+// with TopologyDetail::Full, connectivity and sharpness.
 Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod,
                         TopologyDetail detail = TopologyDetail::Full);
 

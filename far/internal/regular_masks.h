@@ -3,7 +3,7 @@
 // whose n faces are all triangles (Loop, weights by n), and the same for quads (Catmull-Clark:
 // an edge between two quads; a vertex whose n faces are all quads). After a level or two nearly
 // every child of a pure or mostly pure mesh is one of these. The first mask of each key is built
-// by the rules (rules.cpp); if the rules listed exactly the vertices gathered here, in the same
+// by the scheme's rules (rules.cpp); if they listed exactly the vertices gathered here, in the same
 // order, its pooled weights serve every later mask of the key, which then only gathers its
 // vertices: the table is the one the rules build, without their arithmetic.
 #pragma once
@@ -28,15 +28,15 @@ public:
     int edge(int e, int* out, int& key) const {
         if (t_.edgeFaceCount(e) != 2) return 0;
         const int a = t_.edgeVerts[2 * e], b = t_.edgeVerts[2 * e + 1];
-        const int f0 = t_.edgeFaces[t_.edgeFaceOffsets[e]], f1 = t_.edgeFaces[t_.edgeFaceOffsets[e] + 1];
+        const int f0 = t_.facesOfEdge(e)[0], f1 = t_.facesOfEdge(e)[1];
         const int n = t_.faceSize(f0);
         if (n != t_.faceSize(f1) || (n != 3 && n != 4) || f0 == f1) return 0;
         out[0] = a;
         out[1] = b;
         int count = 2;
         for (int f : {f0, f1})
-            for (int c = t_.faceOffsets[f]; c < t_.faceOffsets[f + 1]; ++c)
-                if (t_.faceVerts[c] != a && t_.faceVerts[c] != b) out[count++] = t_.faceVerts[c];
+            for (int c : t_.verticesOfFace(f))
+                if (c != a && c != b) out[count++] = c;
         // Two faces sharing more than the edge would merge entries: left to the rules.
         for (int i = 2 + n - 2; i < count; ++i)
             for (int j = 2; j < 2 + n - 2; ++j)
@@ -48,20 +48,17 @@ public:
     int vertex(int v, int* out, int& key) const {
         const int n = t_.vertexEdgeCount(v);
         if (n < 3 || n > kMaxValence || t_.vertexFaceCount(v) != n) return 0;
-        const int size = t_.faceSize(t_.vertFaces[t_.vertFaceOffsets[v]]);
+        const IndexSpan faces = t_.facesOfVertex(v);
+        const int size = t_.faceSize(faces[0]);
         if (size != 3 && size != 4) return 0;
-        for (int i = t_.vertFaceOffsets[v]; i < t_.vertFaceOffsets[v + 1]; ++i)
-            if (t_.faceSize(t_.vertFaces[i]) != size) return 0;
+        for (int f : faces)
+            if (t_.faceSize(f) != size) return 0;
         int count = 0;
         out[count++] = v;
-        for (int i = t_.vertEdgeOffsets[v]; i < t_.vertEdgeOffsets[v + 1]; ++i)
-            out[count++] = t_.otherVertex(t_.vertEdges[i], v);
+        for (int e : t_.edgesOfVertex(v)) out[count++] = t_.otherVertex(e, v);
         if (size == 4) {  // then each quad's corner opposite v, in face order
-            for (int i = t_.vertFaceOffsets[v]; i < t_.vertFaceOffsets[v + 1]; ++i) {
-                const int f = t_.vertFaces[i], b = t_.faceOffsets[f];
-                int c = 0;
-                while (t_.faceVerts[b + c] != v) ++c;
-                const int diagonal = t_.faceVerts[b + (c + 2) % 4];
+            for (int f : faces) {
+                const int diagonal = t_.verticesOfFace(f)[(t_.cornerOfVertex(f, v) + 2) % 4];
                 // A diagonal that is also a neighbour or another face's diagonal would merge.
                 for (int j = 1; j < count; ++j)
                     if (out[j] == diagonal) return 0;

@@ -1,7 +1,6 @@
-// Subdivision rules: the mask of every child vertex over the parent level's vertices.
+// The masks of a level's child vertices: the crease rules every scheme shares, around the
+// scheme's own masks (far/internal/scheme.h).
 #pragma once
-
-#include <vector>
 
 #include <quadtri/far/options.h>
 #include "far/internal/refine_topology.h"
@@ -12,11 +11,8 @@
 namespace quadtri {
 inline namespace v0 {
 
-// η of the Stam-Loop correction v2 = v1 + η (v1 - v0) for a smooth vertex with nE incident
-// edges, nQ quad-like and nT triangular faces (docs/schemes/stam_loop.md, §3).
-double stamLoopEta(int nE, int nQ, int nT);
-
-// Masks of the child vertices of `parent`, in the child order of `numbering`.
+// Masks of the child vertices of `parent`, in the child order of `numbering` (which must split
+// triangles as options.scheme does).
 // Masks are accumulated in double; Table is StencilTable (float weights, pooled: what the
 // Refiner stores) or StencilTableD (double weights, for exact tests and composition).
 // Large levels are built on the calling TBB arena's threads; the table does not depend on

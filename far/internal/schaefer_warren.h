@@ -2,16 +2,15 @@
 // subdivide each piece linearly, then average typed centroids (a quad's centroid from quad copies,
 // a triangle's ¼ x + ⅜ (other corners) from triangle copies) weighted by the angle each face spans
 // in the ordinary layout (π/2, π/3). Old vertices are corrected as in Stam-Loop with v0 the
-// pre-unzip position, so that away from the network the masks equal Stam-Loop's exactly.
+// pre-unzip position, so that away from the network the masks equal Stam-Loop's exactly, and
+// the masks there are Stam-Loop's (the base class); sharp masks are the shared ones.
 #pragma once
-
-#include "far/internal/sparse_accumulator.h"
-#include <quadtri/far/stencil_table.h>
-#include <quadtri/far/topology.h>
-#include "far/internal/stencil_table_double.h"
 
 #include <cstdint>
 #include <vector>
+
+#include "far/internal/stam_loop.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -19,28 +18,32 @@ inline namespace v0 {
 // What every mask of a level reads: each vertex's copies in the unzipped pieces (as stencils over
 // the level's vertices) and which faces have a vertex on the network. Built once per level and
 // shared, read-only, by the threads building its masks.
-struct UnzippedLevel {
+struct UnzippedLevel : SchemeLevel {
     explicit UnzippedLevel(const Topology& topology);
 
     StencilTableD triangleCopies, quadCopies;
     std::vector<uint8_t> faceTouches;  // per face: one of its vertices has network edges
 };
 
-class SchaeferWarrenMasks {
+class SchaeferWarrenMasks : public StamLoopMasks {
 public:
     SchaeferWarrenMasks(const Topology& topology, const UnzippedLevel& unzipped, SparseAccumulator& accumulator);
 
+    void facePoint(int face, double scale) override;
+    void smoothEdgePoint(int edge, double scale) override;  // an edge with two faces
+    bool regularEdge(int edge) const override { return !touchesEdge(edge); }
+    bool regularVertex(int vertex) const override { return !touchesVertex(vertex); }
+
+protected:
+    void smoothVertexPoint(int vertex, double scale) override;  // with the η correction
+
+private:
     // Whether a child's mask reads an unzipped copy: only then does it differ from Stam-Loop's
     // (which is cheaper to build), i.e. when a face around it has a vertex on the network.
     bool touchesFace(int face) const { return u_.faceTouches[face] != 0; }
     bool touchesEdge(int edge) const;
     bool touchesVertex(int vertex) const;
 
-    void facePoint(int face, double scale);
-    void edgePoint(int edge, double scale);      // smooth rule of an edge with two faces
-    void vertexPoint(int vertex, double scale);  // smooth rule, with the η correction
-
-private:
     // A point of the linearly subdivided mesh: a parent vertex, an edge midpoint or a face centre.
     struct Point {
         enum Kind { Vertex, Edge, Face } kind;
@@ -51,14 +54,11 @@ private:
     // Centroid of a child quad (4 corners) or the triangle centroid ¼ x + ⅜ (b + c) of a child
     // triangle whose first corner x is the vertex being averaged.
     void addCentroid(const Point* corners, int count, double scale);
-    int cornerOfEdge(int face, int edge) const;
-    int cornerOfVertex(int face, int vertex) const;
-    int edgeAt(int face, int corner) const;  // edge from corner to corner + 1 (cyclic)
 
-    const Topology& t_;
     const UnzippedLevel& u_;
-    SparseAccumulator& acc_;
 };
+
+const SchemeRules& schaeferWarrenRules();
 
 }  // namespace v0
 }  // namespace quadtri

@@ -52,7 +52,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (std::string(e.what()).rfind(kFileName, 0) != 0) fuzz::fail("an OBJ error not naming the file");
         return 0;
     }
-    for (Scheme scheme : {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly})
-        refineUnder(mesh, scheme);
+    for (Scheme scheme : allSchemes()) refineUnder(mesh, scheme);
     return 0;
 }
