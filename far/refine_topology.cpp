@@ -70,6 +70,31 @@ public:
 
 private:
     int half(int e, int v) const { return 2 * e + (p_.edgeVerts[2 * e] == v ? 0 : 1); }
+    // A collapsed edge (both ends v; kept only by schemes that read faces as OpenSubdiv does) has
+    // two halves between the same two vertices: the corner that leaves it takes the first, the
+    // corner that enters it the second (docs/schemes/catmull_clark.md).
+    bool collapsed(int e) const { return p_.edgeVerts[2 * e] == p_.edgeVerts[2 * e + 1]; }
+    int halfLeaving(int e, int v) const { return collapsed(e) ? 2 * e : half(e, v); }
+    int halfEntering(int e, int v) const { return collapsed(e) ? 2 * e + 1 : half(e, v); }
+    // The child faces at vertex v's corners, in vertFaces order. A face with a collapsed edge
+    // at v is listed twice in a row, once per corner v has in it.
+    void fillVertexFaces(int v, int* out) const {
+        int last = -1, corner = -1;
+        for (int f : p_.facesOfVertex(v)) {
+            const IndexSpan corners = p_.verticesOfFace(f);
+            corner = f == last ? corner + 1 : 0;
+            while (corners[corner] != v) ++corner;
+            last = f;
+            *out++ = firstChildFace_[f] + corner;
+        }
+    }
+    // The halves of v's edges at v, in vertEdges order; a collapsed edge is listed twice in a
+    // row, once per half.
+    void fillVertexHalves(int v, int* out) const {
+        const IndexSpan edges = p_.edgesOfVertex(v);
+        for (int i = 0; i < edges.size(); ++i)
+            *out++ = i > 0 && edges[i - 1] == edges[i] ? halfEntering(edges[i], v) : halfLeaving(edges[i], v);
+    }
     bool inFour(int faceSize) const { return num_.splitsInFour(faceSize); }
     // Interior edge j of face f, j in [-1, n]: wraps without a division.
     int interior(int f, int j) const {
@@ -103,14 +128,14 @@ private:
             for (int i = 0, last = n - 1; i < n; last = i++) {  // corner i's child keeps the parent's orientation
                 const int v = corners[i], e = sides[i], prev = sides[last];
                 offsets[i] = corner + k;
-                put(k++, num_.vertexPoint(v), [&] { return half(e, v); });
+                put(k++, num_.vertexPoint(v), [&] { return halfLeaving(e, v); });
                 if (four) {
                     put(k++, num_.edgePoint(e), [&] { return interior(f, last); });
                 } else {
                     put(k++, num_.edgePoint(e), [&] { return interior(f, i); });
                     put(k++, num_.facePoint[f], [&] { return interior(f, last); });
                 }
-                put(k++, num_.edgePoint(prev), [&] { return half(prev, v); });
+                put(k++, num_.edgePoint(prev), [&] { return halfEntering(prev, v); });
             }
             if (four) {
                 offsets[3] = corner + k;
@@ -232,7 +257,7 @@ private:
                 for (int j = 0; j < p_.faceSize(i); ++j) out[j] = firstChildFace_[i] + j;
                 return;
             case Kind::Vertex:
-                for (int f : p_.facesOfVertex(i)) *out++ = firstChildFace_[f] + p_.cornerOfVertex(f, i);
+                fillVertexFaces(i, out);
                 return;
             case Kind::Edge: break;
             }
@@ -268,7 +293,7 @@ private:
                 for (int j = 0; j < p_.faceSize(i); ++j) out[j] = firstInterior_[i] + j;
                 return;
             case Kind::Vertex:
-                for (int e : p_.edgesOfVertex(i)) *out++ = half(e, i);
+                fillVertexHalves(i, out);
                 return;
             case Kind::Edge: break;
             }
@@ -292,18 +317,21 @@ private:
 
     // Halves of a parent edge keep its boundary / non-manifold / seam flags; interior edges have
     // two faces of one parent: none. Vertex points keep their parent's flags, edge points take
-    // their edge's, face points none.
+    // their edge's, face points none; but triangles split into quads leave no triangle, so no
+    // seam, in the child.
     void flags() {
         c_.edgeFlags.assign(c_.numEdges(), 0);
         c_.vertFlags.assign(c_.numVertices, 0);
+        const bool seams = num_.triangleSplit == TriangleSplit::FourTriangles;
+        const uint8_t edgeKept = seams ? 0xFF : uint8_t(~kEdgeSeam), vertexKept = seams ? 0xFF : uint8_t(~kVertexSeam);
         forEach(p_.numEdges(), [&](int e) {
-            const uint8_t f = p_.edgeFlags[e];
+            const uint8_t f = p_.edgeFlags[e] & edgeKept;
             c_.edgeFlags[2 * e] = c_.edgeFlags[2 * e + 1] = f;
             c_.vertFlags[num_.edgePoint(e)] = (f & kEdgeBoundary ? kVertexBoundary : 0) |
                                               (f & kEdgeNonManifold ? kVertexNonManifold : 0) |
                                               (f & kEdgeSeam ? kVertexSeam : 0);
         });
-        forEach(p_.numVertices, [&](int v) { c_.vertFlags[num_.vertexPoint(v)] = p_.vertFlags[v]; });
+        forEach(p_.numVertices, [&](int v) { c_.vertFlags[num_.vertexPoint(v)] = p_.vertFlags[v] & vertexKept; });
         c_.edgeSharpness.assign(c_.numEdges(), 0.0f);
         c_.vertSharpness.assign(c_.numVertices, 0.0f);
     }
@@ -325,9 +353,12 @@ void inheritSharpness(const Topology& p, const ChildNumbering& num, CreaseMethod
         const int n = p.vertexEdgeCount(v);
         childSharpness.resize(n);
         childEdgeSharpnessAtVertex(p, v, method, childSharpness.data());
+        const IndexSpan edges = p.edgesOfVertex(v);
         for (int i = 0; i < n; ++i) {
-            const int e = p.edgesOfVertex(v)[i];
-            c.edgeSharpness[2 * e + (p.edgeVerts[2 * e] == v ? 0 : 1)] = childSharpness[i];
+            // A collapsed edge is listed twice in a row: its first half, then its second.
+            const int e = edges[i];
+            const bool second = p.edgeVerts[2 * e] != v || (i > 0 && edges[i - 1] == e);
+            c.edgeSharpness[2 * e + (second ? 1 : 0)] = childSharpness[i];
         }
     }
 }

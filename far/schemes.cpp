@@ -12,6 +12,8 @@ const SchemeRules& schaeferWarrenRules();
 const SchemeRules& stamLoopRules();
 const SchemeRules& catmarkButterflyRules();
 const SchemeRules& bilinearRules();
+const SchemeRules& catmullClarkRules();
+const SchemeRules& loopRules();
 
 namespace {
 
@@ -25,6 +27,8 @@ constexpr Registered kSchemes[] = {
     {Scheme::StamLoop, stamLoopRules},
     {Scheme::CatmarkButterfly, catmarkButterflyRules},
     {Scheme::Bilinear, bilinearRules},
+    {Scheme::CatmullClark, catmullClarkRules},
+    {Scheme::Loop, loopRules},
 };
 
 const Registered* find(Scheme scheme) {

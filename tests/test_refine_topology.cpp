@@ -66,6 +66,23 @@ TEST(RefineTopology, ChildLevelsEqualTheGenericBuilder) {
     }
 }
 
+// Triangles split into three quads (catmull-clark). A collapsed edge's two halves join the same
+// two vertices, which the generic builder would merge into one edge: that shape's halves are
+// checked in test_catmull_clark instead.
+TEST(RefineTopology, ThreeQuadTriangleSplitEqualsTheGenericBuilder) {
+    Options catmullClark;
+    catmullClark.scheme = Scheme::CatmullClark;
+    for (const std::string& name : allMeshes()) {
+        if (name == "osd/catmark_nonman_quadpole8.obj") continue;
+        const io::ObjMesh mesh = io::readObj(meshPath(name));
+        const int levels = mesh.numFaces() > 500 ? 1 : 2;
+        Refiner refiner(mesh.descriptor(), mesh.applyTags(catmullClark));
+        refiner.refineUniform(levels, TopologyDetail::Full);
+        for (int f = 0; f < refiner.level(1).numFaces(); ++f) ASSERT_EQ(refiner.level(1).faceSize(f), 4) << name;
+        for (int L = 1; L <= levels; ++L) expectSameConnectivity(refiner.level(L), name + " level " + std::to_string(L));
+    }
+}
+
 // The halves of parent edge e are child edges 2e (at edgeVerts[2e]) and 2e+1, carrying the
 // decayed sharpness of their end.
 TEST(RefineTopology, HalvesOfParentEdgesCarryTheirSharpness) {

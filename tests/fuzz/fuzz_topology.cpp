@@ -73,7 +73,9 @@ std::vector<float> decodePositions(ByteReader& in, int numVertices) {
 
 void decode(ByteReader& in, FuzzedMesh& m) {
     unsigned choice = in.next();
-    m.options.scheme = Scheme(choice % 4);
+    const std::vector<Scheme>& schemes = allSchemes();
+    m.options.scheme = schemes[choice % schemes.size()];
+    m.options.smoothTriangles = takesSmoothTriangles(m.options.scheme) && choice / 48 % 2;
     m.options.boundary = BoundaryInterpolation(choice / 4 % 3);
     m.options.creaseMethod = CreaseMethod(choice / 12 % 2);
     m.options.leftHanded = choice / 24 % 2;
