@@ -11,7 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "far/refine_topology.h"
 #include "far/refiner.h"
+#include "far/rules.h"
+#include "far/scheme.h"
 #include "tests/local_meshes.h"
 #include "tests/rule_oracles.h"
 #include "tests/test_support.h"
@@ -50,6 +53,25 @@ RefinedRing refineRing(const std::string& kinds, bool smoothTriangles) {
     for (int f = 0; f < t.numFaces(); ++f)
         r.faces.emplace_back(t.faceVerts.begin() + t.faceOffsets[f], t.faceVerts.begin() + t.faceOffsets[f + 1]);
     return r;
+}
+
+// Float tables of smooth levels take the regular masks' short cut (far/regular_masks.h): the
+// table must be exactly the one the rules build (the double table, rounded and interned).
+void expectShortCutEqualsTheRules(const char* name, const Options& base) {
+    const io::ObjMesh mesh = io::readObj(meshPath(name));
+    Refiner refiner(mesh.descriptor(), mesh.applyTags(base));
+    refiner.refineUniform(3, TopologyDetail::Full);
+    for (int L = 1; L <= 3; ++L) {
+        const std::string where = std::string(name) + " level " + std::to_string(L);
+        const Topology& parent = refiner.level(L - 1);
+        const ChildNumbering numbering = numberChildren(parent, rulesOf(base.scheme).triangleSplit());
+        const StencilTable rules = toFloatTable(buildLevelStencils<StencilTableD>(parent, numbering, refiner.options()));
+        const StencilTable& built = refiner.levelStencils(L);
+        EXPECT_EQ(built.offsets, rules.offsets) << where;
+        EXPECT_EQ(built.indices, rules.indices) << where;
+        EXPECT_EQ(built.weightOffsets, rules.weightOffsets) << where;
+        EXPECT_EQ(built.weights, rules.weights) << where;
+    }
 }
 
 // Adds x times the centroid of `face` to d.
@@ -258,6 +280,15 @@ TEST(CatmullClark, ObjTagSmoothTriangles) {
     } catch (const io::ObjError& e) {
         EXPECT_EQ(std::string(e.what()), "b.obj:7: smoothtriangles 'always' is not smooth or catmark");
     }
+}
+
+TEST(CatmullClark, RegularShortCutEqualsTheRules) {
+    for (const char* name : {"osd/catmark_cube.obj", "osd/catmark_torus.obj", "osd/catmark_pyramid.obj",
+                             "mixed/mixed_torus.obj"})
+        for (bool smooth : {false, true}) {
+            SCOPED_TRACE(smooth ? "smooth triangles" : "catmark triangles");
+            expectShortCutEqualsTheRules(name, catmullClark(smooth));
+        }
 }
 
 }  // namespace

@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "far/refine_topology.h"
 #include "far/refiner.h"
+#include "far/rules.h"
+#include "far/scheme.h"
 #include "tests/local_meshes.h"
 #include "tests/rule_oracles.h"
 #include "tests/test_support.h"
@@ -22,6 +25,25 @@ Options loop() {
     Options o;
     o.scheme = Scheme::Loop;
     return o;
+}
+
+// Float tables of smooth levels take the regular masks' short cut (far/regular_masks.h): the
+// table must be exactly the one the rules build (the double table, rounded and interned).
+void expectShortCutEqualsTheRules(const char* name, const Options& base) {
+    const io::ObjMesh mesh = io::readObj(meshPath(name));
+    Refiner refiner(mesh.descriptor(), mesh.applyTags(base));
+    refiner.refineUniform(3, TopologyDetail::Full);
+    for (int L = 1; L <= 3; ++L) {
+        const std::string where = std::string(name) + " level " + std::to_string(L);
+        const Topology& parent = refiner.level(L - 1);
+        const ChildNumbering numbering = numberChildren(parent, rulesOf(base.scheme).triangleSplit());
+        const StencilTable rules = toFloatTable(buildLevelStencils<StencilTableD>(parent, numbering, refiner.options()));
+        const StencilTable& built = refiner.levelStencils(L);
+        EXPECT_EQ(built.offsets, rules.offsets) << where;
+        EXPECT_EQ(built.indices, rules.indices) << where;
+        EXPECT_EQ(built.weightOffsets, rules.weightOffsets) << where;
+        EXPECT_EQ(built.weights, rules.weights) << where;
+    }
 }
 
 // Loop splits triangles in four: no face points; edges, then vertices.
@@ -92,6 +114,11 @@ TEST(Loop, RefusesAQuadNamingIt) {
     }
     // Every other scheme takes it.
     EXPECT_NO_THROW(Refiner(m.descriptor(), Options()));
+}
+
+TEST(Loop, RegularShortCutEqualsTheRules) {
+    for (const char* name : {"osd/loop_icosahedron.obj", "osd/loop_cube.obj", "osd/loop_xord_interior.obj"})
+        expectShortCutEqualsTheRules(name, loop());
 }
 
 }  // namespace
