@@ -24,8 +24,10 @@
 #include "bench/vulkan_case.h"
 #else
 namespace quadtri {
+inline namespace v0 {
 class VulkanContext;  // built without Vulkan: runCase is only ever given none
-}
+}  // namespace v0
+}  // namespace quadtri
 #endif
 
 namespace quadtri::bench {

@@ -4,9 +4,9 @@
 #include <stdexcept>
 
 #include "bench/compare.h"
-#include "osd/tbb_evaluator.h"
+#include <quadtri/osd/tbb_evaluator.h>
 #include "bench/timing.h"
-#include "osd/cpu_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
 
 namespace quadtri::bench {
 

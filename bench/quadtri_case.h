@@ -7,8 +7,8 @@
 
 #include "bench/figures.h"
 #include "bench/torus.h"
-#include "far/options.h"
-#include "far/refiner.h"
+#include <quadtri/far/options.h>
+#include <quadtri/far/refiner.h>
 
 namespace quadtri::bench {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "bench/timing.h"
-#include "osd/vulkan_evaluator.h"
+#include <quadtri/osd/vulkan_evaluator.h>
 
 namespace quadtri::bench {
 

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "far/refiner.h"
-#include "osd/vulkan_context.h"
+#include <quadtri/far/refiner.h>
+#include <quadtri/osd/vulkan_context.h>
 
 namespace quadtri::bench {
 

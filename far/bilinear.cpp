@@ -1,8 +1,9 @@
 // Bilinear subdivision: corners stay, edge points are midpoints, face points centroids.
 // Sharpness changes none of these masks, so every level is built as smooth.
-#include "far/scheme.h"
+#include "far/internal/scheme.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -35,4 +36,5 @@ const SchemeRules& bilinearRules() {
     return rules;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,13 +1,14 @@
 // Surface rules of catmark-butterfly (see butterfly.h). Every weight below is either Butterfly's
 // or Zorin's, or was derived by docs/catmark_butterfly/derive_seam_rules.py.
-#include "far/butterfly.h"
+#include "far/internal/butterfly.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "far/level_estimate.h"
+#include "far/internal/level_estimate.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -370,4 +371,5 @@ const SchemeRules& catmarkButterflyRules() {
     return rules;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -10,9 +10,10 @@
 #include <cmath>
 #include <utility>
 
-#include "far/butterfly.h"
+#include "far/internal/butterfly.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -104,4 +105,5 @@ void CatmarkButterflyMasks::creaseVertex(int v, const float* edgeSharpness, doub
     addCurveMask(points, count, 0.0, true, acc_, scale);
 }
 
+}  // namespace v0
 }  // namespace quadtri

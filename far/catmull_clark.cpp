@@ -6,9 +6,10 @@
 //   vertex point: (n − 2)/n v + 1/n² Σ neighbours + 1/n² Σ face points, n = incident faces.
 // Creases, corners and their blends are the shared rules (scheme.h, rules.cpp). A face with a
 // collapsed edge (`4 3 5 5`) is kept as it is, as OpenSubdiv keeps it.
-#include "far/scheme.h"
+#include "far/internal/scheme.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -71,4 +72,5 @@ const SchemeRules& catmullClarkRules() {
     return rules;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,8 +1,9 @@
-#include "far/crease.h"
+#include "far/internal/crease.h"
 
 #include <algorithm>
 
 namespace quadtri {
+inline namespace v0 {
 
 bool hasSharpness(const Topology& t) {
     return std::any_of(t.edgeSharpness.begin(), t.edgeSharpness.end(), isSharp) ||
@@ -54,4 +55,5 @@ float transitionWeight(float parentVertexSharpness, float childVertexSharpness, 
     return w > 1.0f ? 1.0f : w;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,6 +1,7 @@
-#include "far/face_loops.h"
+#include "far/internal/face_loops.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 FaceLoops FaceLoopSplitter::split(const int* verts, int n, std::vector<int>& faceVerts, std::vector<int>& faceSizes) {
     FaceLoops result;
@@ -43,4 +44,5 @@ FaceLoops FaceLoopSplitter::split(const int* verts, int n, std::vector<int>& fac
     return result;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,8 +1,9 @@
-#include "far/level_estimate.h"
+#include "far/internal/level_estimate.h"
 
 #include <tbb/task_arena.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 std::size_t edgeCountBound(const Topology& p) {
     return p.edgeVerts.empty() ? p.faceVerts.size() : std::size_t(p.numEdges());
@@ -36,4 +37,5 @@ std::size_t estimateLevelBytes(const Topology& p, const SchemeRules& rules) {
     return topologyBytes + tableBytes + outputBytes + scratchBytes + rules.extraLevelBytes(p);
 }
 
+}  // namespace v0
 }  // namespace quadtri

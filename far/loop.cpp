@@ -6,9 +6,10 @@
 // Creases, corners and their blends are the shared rules (scheme.h, rules.cpp).
 #include <cmath>
 
-#include "far/scheme.h"
+#include "far/internal/scheme.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -61,4 +62,5 @@ const SchemeRules& loopRules() {
     return rules;
 }
 
+}  // namespace v0
 }  // namespace quadtri

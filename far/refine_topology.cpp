@@ -1,13 +1,15 @@
-#include "far/refine_topology.h"
+#include "far/internal/refine_topology.h"
 
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "far/crease.h"
+#include "far/internal/crease.h"
+#include "far/internal/topology_builder.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 ChildNumbering numberChildren(const Topology& parent, TriangleSplit split) {
     ChildNumbering n;
@@ -374,4 +376,5 @@ Topology refineTopology(const Topology& parent, const ChildNumbering& numbering,
     return child;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,20 +1,32 @@
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 
 #include <stdexcept>
 #include <string>
 
 #include <tbb/parallel_invoke.h>
 
-#include "far/level_estimate.h"
-#include "far/refine_topology.h"
-#include "far/rules.h"
-#include "far/scheme.h"
+#include "far/internal/level_estimate.h"
+#include "far/internal/refine_topology.h"
+#include "far/internal/rules.h"
+#include "far/internal/scheme.h"
+#include "far/internal/stencil_table_double.h"
+#include "far/internal/topology_builder.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
     levels_.push_back(buildBaseTopology(desc, options, &warnings_));
     detail_.push_back(TopologyDetail::Full);
+}
+
+const Topology& Refiner::level(int L) const {
+    const Topology& topology = levels_.at(L);
+    if (detail_[L] == TopologyDetail::FacesOnly)
+        throw std::logic_error("level " + std::to_string(L) + " holds its faces only: read them with faces(" +
+                               std::to_string(L) + "), or refine with refineUniform(" + std::to_string(L) +
+                               ", TopologyDetail::Full) for its edges and incidences");
+    return topology;
 }
 
 std::size_t Refiner::estimateLevelBytes(int L) const {
@@ -102,4 +114,5 @@ StencilTable Refiner::factorizedStencils(int L) const {
     return toFloatTable(composed);
 }
 
+}  // namespace v0
 }  // namespace quadtri

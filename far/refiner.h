@@ -4,11 +4,13 @@
 
 #include <vector>
 
-#include "far/options.h"
-#include "far/stencil_table.h"
-#include "far/topology.h"
+#include <quadtri/far/level_faces.h>
+#include <quadtri/far/options.h>
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 class Refiner {
 public:
@@ -29,11 +31,20 @@ public:
     const std::vector<TopologyDiagnostic>& warnings() const { return warnings_; }
     const Options& options() const { return options_; }
 
-    // Topology of level 0 .. maxLevel() (the last one possibly faces only, see refineUniform).
-    // Vertex order of level L >= 1: the face points of the
-    // non-triangle faces of level L-1 (in face order), then one point per edge (edge order),
-    // then one point per vertex (vertex order).
-    const Topology& level(int L) const { return levels_.at(L); }
+    // The faces of level 0 .. maxLevel(), whatever detail the level was built with.
+    // Vertex order of level L >= 1: the face points of level L-1's faces that get one (every
+    // face but the triangles the scheme splits in four), in face order, then one point per edge
+    // (edge order), then one point per vertex (vertex order).
+    LevelFaces faces(int L) const { return LevelFaces(levels_.at(L)); }
+
+    // How much of level L was built: every level but the last is Full; the last one is what
+    // refineUniform's `lastLevel` asked for.
+    TopologyDetail detail(int L) const { return detail_.at(L); }
+
+    // The full topology of level L (edges, incidences, flags, sharpness). Throws std::logic_error
+    // for a level built with its faces only: read those with faces(L), or refine with
+    // refineUniform(L, TopologyDetail::Full).
+    const Topology& level(int L) const;
 
     // Stencils of level L >= 1 over the vertices of level L-1, one per vertex of level L.
     const StencilTable& levelStencils(int L) const { return levelTables_.at(L - 1); }
@@ -61,4 +72,5 @@ private:
     std::vector<StencilTable> levelTables_;
 };
 
+}  // namespace v0
 }  // namespace quadtri

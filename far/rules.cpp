@@ -2,7 +2,7 @@
 // level"): DeRose creases (docs/schemes/creases.md) decide per child whether the scheme's sharp,
 // smooth or blended mask applies, and the vertex rule with its transition blend; the scheme's
 // masks (scheme.h) supply the weights. The children are built in parallel parts, one worker each.
-#include "far/rules.h"
+#include "far/internal/rules.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -12,13 +12,14 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "far/crease.h"
-#include "far/regular_masks.h"
-#include "far/scheme.h"
-#include "far/sparse_accumulator.h"
-#include "far/stencil_writer.h"
+#include "far/internal/crease.h"
+#include "far/internal/regular_masks.h"
+#include "far/internal/scheme.h"
+#include "far/internal/sparse_accumulator.h"
+#include "far/internal/stencil_writer.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -207,4 +208,5 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
 template StencilTable buildLevelStencils<StencilTable>(const Topology&, const ChildNumbering&, const Options&);
 template StencilTableD buildLevelStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&);
 
+}  // namespace v0
 }  // namespace quadtri

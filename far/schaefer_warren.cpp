@@ -1,9 +1,10 @@
-#include "far/schaefer_warren.h"
+#include "far/internal/schaefer_warren.h"
 
-#include "far/level_estimate.h"
-#include "far/unzip.h"
+#include "far/internal/level_estimate.h"
+#include "far/internal/unzip.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 UnzippedLevel::UnzippedLevel(const Topology& t)
     : triangleCopies(unzipStencils(t, Piece::Triangle)),
@@ -153,4 +154,5 @@ const SchemeRules& schaeferWarrenRules() {
     return rules;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,8 +1,9 @@
 // The masks every scheme shares unless it overrides them: DeRose's sharp rules (midpoint, the
 // crease's ¾ ⅛, a fixed corner; docs/schemes/creases.md) and the dispatch by vertex rule.
-#include "far/scheme.h"
+#include "far/internal/scheme.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 void SchemeMasks::sharpEdgePoint(int e, double scale) {
     acc_.add(t_.edgeVerts[2 * e], 0.5 * scale);
@@ -25,4 +26,5 @@ void SchemeMasks::creaseVertexPoint(int v, const float* edgeSharpness, double sc
         if (isSharp(edgeSharpness[i])) acc_.add(t_.otherVertex(edges[i], v), 0.125 * scale);
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <iterator>
 
-#include "far/scheme.h"
+#include "far/internal/scheme.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 // Each defined in its scheme's file.
 const SchemeRules& schaeferWarrenRules();
@@ -70,4 +71,5 @@ std::optional<Scheme> schemeNamed(std::string_view name) {
     return std::nullopt;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,9 +1,10 @@
-#include "far/stam_loop.h"
+#include "far/internal/stam_loop.h"
 
 #include <array>
 #include <cmath>
 
 namespace quadtri {
+inline namespace v0 {
 
 double stamLoopEta(int nE, int nQ, int nT) {
     const double n = nE;
@@ -83,4 +84,5 @@ const SchemeRules& stamLoopRules() {
     return rules;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,14 +1,16 @@
 // Conversion of built (double) tables to stored (float, weight-pooled) ones and back, and
 // composition of per-level tables into factorized ones.
-#include "far/stencil_table.h"
+#include <quadtri/far/stencil_table.h>
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "far/sparse_accumulator.h"
-#include "far/weight_pool.h"
+#include "far/internal/sparse_accumulator.h"
+#include "far/internal/weight_pool.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 StencilTable toFloatTable(const StencilTableD& d) {
     StencilTable out;
@@ -83,4 +85,5 @@ StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& i
     return result;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -6,6 +6,7 @@
 #include <vector>
 
 namespace quadtri {
+inline namespace v0 {
 
 // What the evaluators read. Indices are CSR; the weights live in a pool in which identical
 // sequences are stored once (WeightPool), each stencil pointing at its own. After a level or two
@@ -28,28 +29,5 @@ struct StencilTable {
     }
 };
 
-// A plain CSR table with double weights, one per entry: how the analyzer builds and composes
-// tables (stencil i's entries are [offsets[i], offsets[i] + sizes[i])).
-struct StencilTableD {
-    int numSourceVertices = 0;
-    std::vector<int> sizes;
-    std::vector<int> offsets;
-    std::vector<int> indices;
-    std::vector<double> weights;
-};
-
-// The float table stored for evaluation (weights rounded to float, then interned), and back to
-// plain CSR.
-StencilTable toFloatTable(const StencilTableD& table);
-StencilTableD toDoubleTable(const StencilTable& table);
-
-// Bytes of a table's arrays.
-std::size_t bytesOf(const StencilTableD& table);
-
-// outer ∘ inner: stencils of `outer` (over inner's stencils) expanded over inner's sources.
-// Throws std::length_error before the result's arrays would pass `maxBytes` (or 2^31 - 1
-// entries, the reach of its int offsets); the caller names what was refused.
-StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner,
-                              std::size_t maxBytes = ~std::size_t(0));
-
+}  // namespace v0
 }  // namespace quadtri

@@ -1,14 +1,16 @@
 // Connectivity from face-vertex lists: edges, incidences and boundary / non-manifold / seam flags.
-#include "far/topology.h"
+#include <quadtri/far/topology.h>
 
-#include "far/face_loops.h"
-#include "far/scheme.h"
+#include "far/internal/face_loops.h"
+#include "far/internal/scheme.h"
+#include "far/internal/topology_builder.h"
 
 #include <algorithm>
 #include <string>
 #include <utility>
 
 namespace quadtri {
+inline namespace v0 {
 
 bool takesSmoothTriangles(Scheme scheme) { return rulesOf(scheme).acceptsSmoothTriangles(); }
 
@@ -350,4 +352,5 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     return t;
 }
 
+}  // namespace v0
 }  // namespace quadtri

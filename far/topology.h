@@ -4,9 +4,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "far/options.h"
+#include <quadtri/far/options.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 // A run of indices inside one of Topology's arrays (a face's corners, a vertex's edges): two
 // pointers, so that hot loops read it as they would the raw offsets.
@@ -103,7 +104,7 @@ private:
 // (to draw or write them); its edges, incidences, flags and sharpness are several times the cost.
 enum class TopologyDetail {
     Full,       // faces, edges, incidences, flags and sharpness
-    FacesOnly,  // numVertices, faceOffsets, faceVerts and faceHole; every other array empty
+    FacesOnly,  // numVertices, faceOffsets, faceVerts and faceHole only: Refiner::faces reads it, Refiner::level refuses it
 };
 
 // Bytes of a topology's arrays.
@@ -119,23 +120,5 @@ VertexFaceCounts countVertexFaces(const Topology& topology, int vertex);
 // Edge joining vertices a and b, or -1.
 int findEdge(const Topology& topology, int a, int b);
 
-// Checks the descriptor (throws TopologyError naming the face or vertex) and builds level 0:
-// edges, incidences, sharpness, boundary / non-manifold / seam flags, holes (including the
-// faces that BoundaryInterpolation::None turns into holes). What is accepted with a change (a
-// crease on a pair that is not an edge is ignored, as OpenSubdiv does) is appended to `warnings`.
-Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
-                           std::vector<TopologyDiagnostic>* warnings = nullptr);
-
-// Throws TopologyError for malformed input; called by buildBaseTopology before anything else.
-void validateDescriptor(const TopologyDescriptor& desc);
-
-// Fills edges, incidences and flags of a topology whose numVertices, faceOffsets and faceVerts
-// are set. Sharpness arrays are sized and zeroed. Used for level 0; refined levels know their
-// edges and flags by construction (refine_topology.cpp).
-void completeTopology(Topology& topology);
-
-// Fills the edge-face, vertex-face and vertex-edge incidences from faceVerts, faceEdges and
-// edgeVerts.
-void buildIncidences(Topology& topology);
-
+}  // namespace v0
 }  // namespace quadtri

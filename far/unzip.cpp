@@ -1,8 +1,10 @@
-#include "far/unzip.h"
+#include "far/internal/unzip.h"
 
-#include "far/crease.h"
+#include "far/internal/crease.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 bool isNetworkEdge(const Topology& t, int e) { return (t.edgeFlags[e] & kEdgeSeam) && !isInfinite(t.edgeSharpness[e]); }
 
@@ -52,4 +54,5 @@ StencilTableD unzipStencils(const Topology& t, Piece piece) {
     return table;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -5,9 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "far/topology.h"
+#include <quadtri/far/topology.h>
+#include "far/internal/topology_builder.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -82,4 +84,5 @@ void validateDescriptor(const TopologyDescriptor& d) {
     }
 }
 
+}  // namespace v0
 }  // namespace quadtri

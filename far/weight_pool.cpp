@@ -1,9 +1,10 @@
-#include "far/weight_pool.h"
+#include "far/internal/weight_pool.h"
 
 #include <cstring>
 #include <utility>
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -65,4 +66,5 @@ std::vector<float> WeightPool::takeWeights() {
     return out;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -3,7 +3,9 @@
 // i in [start, end), with w = weights + weightOffsets[i] (the weight pool of StencilTable).
 #pragma once
 
-namespace quadtri::kernels {
+namespace quadtri {
+inline namespace v0 {
+namespace kernels {
 
 struct StencilArrays {
     const int* offsets;        // numStencils + 1
@@ -60,4 +62,6 @@ inline void evalStencils(const float* src, int srcStride, float* dst, int dstStr
     }
 }
 
-}  // namespace quadtri::kernels
+}  // namespace kernels
+}  // namespace v0
+}  // namespace quadtri

@@ -3,6 +3,7 @@
 #pragma once
 
 namespace quadtri {
+inline namespace v0 {
 
 struct BufferDescriptor {
     int offset = 0;  // floats before element 0
@@ -14,4 +15,5 @@ struct BufferDescriptor {
     bool isValid() const { return length > 0 && stride >= length && offset >= 0; }
 };
 
+}  // namespace v0
 }  // namespace quadtri

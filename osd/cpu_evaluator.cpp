@@ -1,9 +1,10 @@
-#include "osd/cpu_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
 
 #include "kernels/stencil_kernel.h"
-#include "osd/eval_arguments.h"
+#include "osd/internal/eval_arguments.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 void CpuEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
                                 const BufferDescriptor& dstDesc, const StencilTable& table, int start, int end) {
@@ -14,4 +15,5 @@ void CpuEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
                           detail::stencilArrays(table), start, end);
 }
 
+}  // namespace v0
 }  // namespace quadtri

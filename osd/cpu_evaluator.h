@@ -1,10 +1,11 @@
 // Serial evaluator: applies a StencilTable to any per-vertex float data.
 #pragma once
 
-#include "far/stencil_table.h"
-#include "osd/buffer_descriptor.h"
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/osd/buffer_descriptor.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 class CpuEvaluator {
 public:
@@ -18,4 +19,5 @@ public:
                              int end = -1);
 };
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,9 +1,11 @@
-#include "osd/eval_arguments.h"
+#include "osd/internal/eval_arguments.h"
 
 #include <stdexcept>
 #include <string>
 
-namespace quadtri::detail {
+namespace quadtri {
+inline namespace v0 {
+namespace detail {
 
 bool checkEvalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
                         const BufferDescriptor& dstDesc, int numStencils, int start, int& end) {
@@ -21,4 +23,6 @@ bool checkEvalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool d
     return true;
 }
 
-}  // namespace quadtri::detail
+}  // namespace detail
+}  // namespace v0
+}  // namespace quadtri

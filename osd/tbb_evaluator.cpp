@@ -1,12 +1,13 @@
-#include "osd/tbb_evaluator.h"
+#include <quadtri/osd/tbb_evaluator.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "kernels/stencil_kernel.h"
-#include "osd/eval_arguments.h"
+#include "osd/internal/eval_arguments.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -39,4 +40,5 @@ void TbbEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
     });
 }
 
+}  // namespace v0
 }  // namespace quadtri

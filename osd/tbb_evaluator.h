@@ -2,10 +2,11 @@
 // oneTBB in the caller's task arena (its thread count); no global state.
 #pragma once
 
-#include "far/stencil_table.h"
-#include "osd/buffer_descriptor.h"
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/osd/buffer_descriptor.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 class TbbEvaluator {
 public:
@@ -17,4 +18,5 @@ public:
                              int end = -1);
 };
 
+}  // namespace v0
 }  // namespace quadtri

@@ -1,9 +1,10 @@
-#include "osd/vulkan_buffer.h"
+#include <quadtri/osd/vulkan_buffer.h>
 
 #include <stdexcept>
 #include <string>
 
 namespace quadtri {
+inline namespace v0 {
 
 VulkanVertexBuffer VulkanVertexBuffer::create(VulkanContext& ctx, int numElements, int stride) {
     if (numElements < 0 || stride <= 0)
@@ -42,4 +43,5 @@ void VulkanVertexBuffer::readBack(float* dst) const {
     detail::download(*ctx_, {{buffer_.buffer(), 0, nullptr, dst, numFloats() * sizeof(float)}});
 }
 
+}  // namespace v0
 }  // namespace quadtri

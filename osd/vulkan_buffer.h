@@ -4,10 +4,11 @@
 
 #include <vulkan/vulkan.h>
 
-#include "osd/vulkan_context.h"
-#include "osd/vulkan_memory.h"
+#include <quadtri/osd/vulkan_context.h>
+#include <quadtri/osd/vulkan_memory.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 class VulkanVertexBuffer {
 public:
@@ -32,4 +33,5 @@ private:
     detail::DeviceBuffer buffer_;
 };
 
+}  // namespace v0
 }  // namespace quadtri

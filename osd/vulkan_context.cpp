@@ -1,4 +1,4 @@
-#include "osd/vulkan_context.h"
+#include <quadtri/osd/vulkan_context.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -6,6 +6,7 @@
 #include <cstring>
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace shaders {
 extern const uint32_t stencil_eval_comp[];
@@ -254,4 +255,5 @@ void VulkanContext::destroy() noexcept {
     instance_ = VK_NULL_HANDLE;
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -14,6 +14,7 @@
 #include <vector>
 
 namespace quadtri {
+inline namespace v0 {
 
 // A failed Vulkan call ("vkCreateDevice failed: VK_ERROR_OUT_OF_HOST_MEMORY"), or no usable
 // driver or device.
@@ -134,4 +135,5 @@ private:
                                                    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 };
 
+}  // namespace v0
 }  // namespace quadtri

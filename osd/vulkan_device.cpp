@@ -5,9 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "osd/vulkan_context.h"
+#include <quadtri/osd/vulkan_context.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -105,4 +106,5 @@ void VulkanContext::pickDevice() {
     vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memory_);
 }
 
+}  // namespace v0
 }  // namespace quadtri

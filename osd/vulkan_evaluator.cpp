@@ -1,4 +1,4 @@
-#include "osd/vulkan_evaluator.h"
+#include <quadtri/osd/vulkan_evaluator.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -6,9 +6,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "osd/eval_arguments.h"
+#include "osd/internal/eval_arguments.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 namespace {
 
@@ -211,4 +212,5 @@ void VulkanEvaluator::EvalLevelsAndWait(VulkanVertexBuffer& buffer, const Buffer
     reset(waited_);
 }
 
+}  // namespace v0
 }  // namespace quadtri

@@ -8,12 +8,13 @@
 #include <cstddef>
 #include <vector>
 
-#include "osd/buffer_descriptor.h"
-#include "osd/vulkan_buffer.h"
-#include "osd/vulkan_context.h"
-#include "osd/vulkan_stencil_table.h"
+#include <quadtri/osd/buffer_descriptor.h>
+#include <quadtri/osd/vulkan_buffer.h>
+#include <quadtri/osd/vulkan_context.h>
+#include <quadtri/osd/vulkan_stencil_table.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 // Any storage buffer of the caller: the descriptor's float 0 lies `byteOffset` bytes into it
 // (a multiple of 4; need not meet minStorageBufferOffsetAlignment). The buffer needs
@@ -80,4 +81,5 @@ private:
     DescriptorArena waited_;    // sets of the *AndWait calls, reset after each
 };
 
+}  // namespace v0
 }  // namespace quadtri

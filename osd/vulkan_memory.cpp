@@ -1,9 +1,11 @@
-#include "osd/vulkan_memory.h"
+#include <quadtri/osd/vulkan_memory.h>
 
 #include <cstring>
 #include <utility>
 
-namespace quadtri::detail {
+namespace quadtri {
+inline namespace v0 {
+namespace detail {
 
 DeviceBuffer::DeviceBuffer(VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
                            VkMemoryPropertyFlags properties)
@@ -119,4 +121,6 @@ void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions) {
     }
 }
 
-}  // namespace quadtri::detail
+}  // namespace detail
+}  // namespace v0
+}  // namespace quadtri

@@ -6,9 +6,11 @@
 
 #include <vector>
 
-#include "osd/vulkan_context.h"
+#include <quadtri/osd/vulkan_context.h>
 
-namespace quadtri::detail {
+namespace quadtri {
+inline namespace v0 {
+namespace detail {
 
 class DeviceBuffer {
 public:
@@ -53,4 +55,6 @@ void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
 // Makes transfer writes (copies, fills) visible to later compute-shader and transfer access.
 void barrierAfterTransferWrite(VkCommandBuffer cmd);
 
-}  // namespace quadtri::detail
+}  // namespace detail
+}  // namespace v0
+}  // namespace quadtri

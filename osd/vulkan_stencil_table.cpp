@@ -1,8 +1,9 @@
-#include "osd/vulkan_stencil_table.h"
+#include <quadtri/osd/vulkan_stencil_table.h>
 
 #include <stdexcept>
 
 namespace quadtri {
+inline namespace v0 {
 
 VulkanStencilTable::VulkanStencilTable(VulkanContext& ctx, const StencilTable& t)
     : device_(ctx.device()), numStencils_(t.numStencils()), numSourceVertices_(t.numSourceVertices) {
@@ -22,4 +23,5 @@ VulkanStencilTable::VulkanStencilTable(VulkanContext& ctx, const StencilTable& t
     });
 }
 
+}  // namespace v0
 }  // namespace quadtri

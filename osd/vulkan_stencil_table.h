@@ -3,11 +3,12 @@
 
 #include <vulkan/vulkan.h>
 
-#include "far/stencil_table.h"
-#include "osd/vulkan_context.h"
-#include "osd/vulkan_memory.h"
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/osd/vulkan_context.h>
+#include <quadtri/osd/vulkan_memory.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 class VulkanStencilTable {
 public:
@@ -28,4 +29,5 @@ private:
     detail::DeviceBuffer offsets_, indices_, weightOffsets_, weights_;
 };
 
+}  // namespace v0
 }  // namespace quadtri

@@ -33,14 +33,18 @@ file(WRITE "${OUTPUT}.tmp"
 #include <cstddef>
 #include <cstdint>
 
-namespace quadtri::shaders {
+namespace quadtri {
+inline namespace v0 {
+namespace shaders {
 extern const uint32_t ${SYMBOL}[];
 extern const std::size_t ${SYMBOL}_words;
 const uint32_t ${SYMBOL}[] = {
     ${words}
 };
 const std::size_t ${SYMBOL}_words = ${nwords};
-}  // namespace quadtri::shaders
+}  // namespace shaders
+}  // namespace v0
+}  // namespace quadtri
 ")
 file(COPY_FILE "${OUTPUT}.tmp" "${OUTPUT}" ONLY_IF_DIFFERENT)
 file(REMOVE "${OUTPUT}.tmp")

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 
 namespace quadtri::test {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "far/options.h"
+#include <quadtri/far/options.h>
 #include "tools/obj_io.h"
 
 namespace quadtri::test {

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
 
 namespace quadtri::test {

@@ -5,10 +5,11 @@
 #include <queue>
 #include <vector>
 
-#include "far/refine_topology.h"
-#include "far/refiner.h"
-#include "far/rules.h"
-#include "far/scheme.h"
+#include "far/internal/refine_topology.h"
+#include <quadtri/far/refiner.h>
+#include "far/internal/rules.h"
+#include "far/internal/scheme.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri::test {
 

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
 #include "tests/rule_oracles.h"
 #include "tests/test_support.h"
@@ -238,8 +238,8 @@ TEST(Rules, PartitionOfUnity) {
                 for (int L = 1; L <= 3; ++L) {
                     const StencilTable& table = refiner.levelStencils(L);
                     const StencilTable factorized = refiner.factorizedStencils(L);
-                    ASSERT_EQ(table.numStencils(), refiner.level(L).numVertices) << name;
-                    ASSERT_EQ(factorized.numStencils(), refiner.level(L).numVertices) << name;
+                    ASSERT_EQ(table.numStencils(), refiner.faces(L).numVertices()) << name;
+                    ASSERT_EQ(factorized.numStencils(), refiner.faces(L).numVertices()) << name;
                     EXPECT_EQ(factorized.numSourceVertices, mesh.numVertices) << name;
                     double worst = 0, worstFactorized = 0;
                     for (int i = 0; i < table.numStencils(); ++i) {

@@ -17,11 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "far/refine_topology.h"
-#include "far/rules.h"
-#include "far/topology.h"
+#include "far/internal/refine_topology.h"
+#include "far/internal/rules.h"
+#include <quadtri/far/topology.h>
 #include "tests/seam_support.h"
 #include "tests/test_support.h"
+#include "far/internal/stencil_table_double.h"
+#include "far/internal/topology_builder.h"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "osd/cpu_evaluator.h"
-#include "osd/tbb_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 #include "tests/test_support.h"
 
 namespace quadtri {
@@ -48,7 +48,7 @@ Result readAll(const Refiner& refiner, const std::vector<float>& control) {
         r.levelTables.push_back(refiner.levelStencils(L));
         r.factorizedTables.push_back(refiner.factorizedStencils(L));
         r.positions.push_back(evaluate(r.factorizedTables.back(), control));
-        r.faceVerts.push_back(refiner.level(L).faceVerts);
+        r.faceVerts.push_back(test::cornersOf(refiner.faces(L)));
     }
     return r;
 }

@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "osd/cpu_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
 #include "tests/test_support.h"
 
 namespace quadtri {

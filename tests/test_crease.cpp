@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "far/crease.h"
+#include "far/internal/crease.h"
 #include "tests/test_support.h"
 
 namespace quadtri::test {
@@ -113,7 +113,7 @@ TEST(SharpnessDecay, ChaikinIgnoresInfiniteEdgesInTheMean) {
 // Level-1 position of the child of grid vertex v.
 std::vector<float> childOfVertex(const Refiner& r, const Grid& g, int v) {
     const std::vector<std::vector<float>> levels = evaluateLevels(r, g.positions, 3);
-    const int child = r.level(0).numFaces() + r.level(0).numEdges() + v;
+    const int child = r.faces(0).numFaces() + r.level(0).numEdges() + v;
     return {levels[1][3 * child], levels[1][3 * child + 1], levels[1][3 * child + 2]};
 }
 

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
 
 namespace {

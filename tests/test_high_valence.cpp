@@ -13,9 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
 #include "tests/seam_support.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
 // Test names and messages show the scheme's name, not its bytes.
@@ -50,7 +51,7 @@ void expectAffineInvariance(const Shape& shape, const Options& options, int leve
     for (size_t i = 0; i < moved.size(); ++i) moved[i] += t[i % 3];
     for (int L = 1; L <= levels; ++L) {
         const StencilTableD table = doubleLevelTable(refiner, L);
-        ASSERT_EQ(int(table.sizes.size()), refiner.level(L).numVertices) << "level " << L;
+        ASSERT_EQ(int(table.sizes.size()), refiner.faces(L).numVertices()) << "level " << L;
         for (size_t i = 0; i < table.sizes.size(); ++i) {
             double sum = 0.0;
             for (int k = 0; k < table.sizes[i]; ++k) sum += table.weights[size_t(table.offsets[i] + k)];

@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "far/refine_topology.h"
-#include "far/refiner.h"
-#include "far/rules.h"
-#include "far/scheme.h"
+#include "far/internal/refine_topology.h"
+#include <quadtri/far/refiner.h>
+#include "far/internal/rules.h"
+#include "far/internal/stencil_table_double.h"
+#include "far/internal/scheme.h"
 #include "tests/local_meshes.h"
 #include "tests/rule_oracles.h"
 #include "tests/test_support.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tests/test_support.h"
 
 namespace {

@@ -297,7 +297,7 @@ TEST(ObjIo, MissingFile) {
     }
 }
 
-// A small Topology with faceOffsets/faceVerts/faceHole filled by hand: writeObj uses nothing else.
+// A small Topology with faceOffsets/faceVerts/faceHole filled by hand: LevelFaces reads nothing else.
 Topology twoFaceTopology() {
     Topology t;
     t.numVertices = 5;
@@ -311,7 +311,7 @@ TEST(ObjIo, WriteThenParse) {
     Topology t = twoFaceTopology();
     const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2.0f / 3.0f, 1e-7f, -123456.789f};
     std::ostringstream out;
-    writeObj(out, positions.data(), t);
+    writeObj(out, positions.data(), LevelFaces(t));
     std::istringstream in(out.str());
     ObjMesh m = parseObj(in, "roundtrip");
     EXPECT_EQ(m.positions, positions);  // %.9g round-trips floats exactly
@@ -324,7 +324,7 @@ TEST(ObjIo, WriteSkipsHoles) {
     t.faceHole = {1, 0};
     const std::vector<float> positions(15, 0.5f);
     std::ostringstream out;
-    writeObj(out, positions.data(), t);
+    writeObj(out, positions.data(), LevelFaces(t));
     EXPECT_EQ(out.str(), "v 0.5 0.5 0.5\nv 0.5 0.5 0.5\nv 0.5 0.5 0.5\nv 0.5 0.5 0.5\nv 0.5 0.5 0.5\nf 2 5 3\n");
 }
 
@@ -332,7 +332,7 @@ TEST(ObjIo, WriteToUnwritablePath) {
     Topology t = twoFaceTopology();
     const std::vector<float> positions(15, 0.0f);
     try {
-        writeObj("/nonexistent/dir/out.obj", positions.data(), t);
+        writeObj("/nonexistent/dir/out.obj", positions.data(), LevelFaces(t));
         FAIL() << "no error";
     } catch (const ObjError& e) {
         EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/out.obj: cannot write file (No such file or directory)");
@@ -462,7 +462,7 @@ TEST(ObjIo, ReadsEveryTestMeshAndWritesItBack) {
         t.faceVerts = m.faceVerts;
         t.faceHole.assign(m.numFaces(), 0);
         std::ostringstream out;
-        writeObj(out, m.positions.data(), t);
+        writeObj(out, m.positions.data(), LevelFaces(t));
         std::istringstream in(out.str());
         ObjMesh back = parseObj(in, name);
         EXPECT_EQ(back.positions, m.positions) << name;

@@ -22,8 +22,8 @@
 #include <utility>
 #include <vector>
 
-#include "far/refine_topology.h"
-#include "far/scheme.h"
+#include "far/internal/refine_topology.h"
+#include "far/internal/scheme.h"
 #include "tests/osd_reference.h"
 #include "tests/test_support.h"
 
@@ -412,9 +412,7 @@ TEST_P(OsdAgreementBoundaryNone, OpenShapes) {
             osdRefine(mesh, s.reference, BoundaryInterpolation::None, refiner.options().creaseMethod, 3);
         const double diagonal = boundingBoxDiagonal(mesh.positions);
         for (int L = 0; L <= 3; ++L) {
-            const Topology& t = refiner.level(L);
-            int holes = 0;
-            for (uint8_t h : t.faceHole) holes += h;
+            const int holes = refiner.faces(L).numHoles();
             EXPECT_GT(holes, 0) << s.shape << " level " << L;
             EXPECT_EQ(holes, osd.numHoleFaces(L)) << s.shape << " level " << L;
             const PositionMatch m = matchPositions(ours[L], osd.positions[L], diagonal, 1e-5);

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 
-#include "far/refine_topology.h"
+#include "far/internal/refine_topology.h"
 #include "tests/test_support.h"
+#include "far/internal/stencil_table_double.h"
+#include "far/internal/topology_builder.h"
 
 namespace quadtri::test {
 namespace {
@@ -113,11 +115,15 @@ TEST(RefineTopology, FacesOnlyLastLevelCompletesOnDemand) {
         Refiner full(mesh.descriptor(), options), lazy(mesh.descriptor(), options);
         full.refineUniform(2, TopologyDetail::Full);
         lazy.refineUniform(1);
-        const Topology& minimal = lazy.level(1);
-        EXPECT_EQ(minimal.faceVerts, full.level(1).faceVerts) << name;
-        EXPECT_EQ(minimal.faceHole, full.level(1).faceHole) << name;
-        EXPECT_EQ(minimal.numVertices, full.level(1).numVertices) << name;
-        EXPECT_TRUE(minimal.edgeVerts.empty() && minimal.faceEdges.empty() && minimal.vertEdges.empty()) << name;
+        const LevelFaces minimal = lazy.faces(1);
+        EXPECT_EQ(cornersOf(minimal), cornersOf(full.faces(1))) << name;
+        EXPECT_EQ(offsetsOf(minimal), offsetsOf(full.faces(1))) << name;
+        EXPECT_EQ(holesOf(minimal), holesOf(full.faces(1))) << name;
+        EXPECT_EQ(minimal.numVertices(), full.faces(1).numVertices()) << name;
+        // Its edges and incidences are not built, and level() says so rather than hand out empty arrays.
+        EXPECT_EQ(lazy.detail(1), TopologyDetail::FacesOnly) << name;
+        EXPECT_THROW(lazy.level(1), std::logic_error) << name;
+        EXPECT_EQ(full.detail(1), TopologyDetail::Full) << name;
 
         lazy.refineUniform(2);  // level 1 becomes a parent: it is completed first
         expectSameConnectivity(lazy.level(1), name + " level 1 completed");

@@ -11,12 +11,13 @@
 
 #include <tbb/task_arena.h>
 
-#include "far/refine_topology.h"
-#include "far/refiner.h"
-#include "far/rules.h"
+#include "far/internal/refine_topology.h"
+#include <quadtri/far/refiner.h>
+#include "far/internal/rules.h"
 #include "tests/local_meshes.h"
 #include "tests/rule_oracles.h"
 #include "tests/test_support.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace {
 
@@ -295,7 +296,7 @@ TEST(LevelStencils, PartsJoinToTheSerialTable) {
     }
 }
 
-// Float tables of smooth levels take the regular masks' short cut (far/regular_masks.h): the
+// Float tables of smooth levels take the regular masks' short cut (far/internal/regular_masks.h): the
 // table must be exactly the one the rules build (the double table, rounded and interned), on
 // closed pure meshes where nearly every mask is regular, and on a mixed one where only part is.
 TEST(LevelStencils, RegularShortCutEqualsTheRules) {

@@ -20,13 +20,14 @@
 #include <utility>
 #include <vector>
 
-#include "far/refine_topology.h"
-#include "far/refiner.h"
-#include "far/rules.h"
-#include "far/unzip.h"
+#include "far/internal/refine_topology.h"
+#include <quadtri/far/refiner.h>
+#include "far/internal/rules.h"
+#include "far/internal/unzip.h"
 #include "tests/local_meshes.h"
 #include "tests/seam_support.h"
 #include "tests/test_support.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace {
 

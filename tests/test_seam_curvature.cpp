@@ -15,13 +15,14 @@
 #include <utility>
 #include <vector>
 
-#include "far/refine_topology.h"
-#include "far/refiner.h"
-#include "far/rules.h"
-#include "far/unzip.h"
+#include "far/internal/refine_topology.h"
+#include <quadtri/far/refiner.h>
+#include "far/internal/rules.h"
+#include "far/internal/unzip.h"
 #include "tests/local_meshes.h"
 #include "tests/seam_support.h"
 #include "tests/test_support.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace {
 
@@ -190,7 +191,7 @@ TEST(Curvature, JumpAcrossTheSeamOfMixedTorus) {
         std::vector<double> pos(mesh.positions.begin(), mesh.positions.end());
         for (int L = 1; L <= kLast; ++L) {
             const StencilTableD table = doubleLevelTable(refiner, L);
-            ASSERT_EQ(int(table.sizes.size()), refiner.level(L).numVertices);
+            ASSERT_EQ(int(table.sizes.size()), refiner.faces(L).numVertices());
             pos = applyTable(table, pos, 3);
             if (L < kFirst) continue;
             const Topology& t = refiner.level(L);

@@ -10,12 +10,13 @@
 
 #include "bench/sphere.h"
 #include "bench/torus.h"
-#include "far/rules.h"
-#include "far/scheme.h"
-#include "far/weight_pool.h"
-#include "osd/cpu_evaluator.h"
-#include "osd/tbb_evaluator.h"
+#include "far/internal/rules.h"
+#include "far/internal/scheme.h"
+#include "far/internal/weight_pool.h"
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 #include "tests/test_support.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri::test {
 namespace {
@@ -129,7 +130,7 @@ TEST(StencilTableGuard, FactorizedTablesAreBudgeted) {
     Refiner roomy(descriptorOf(sphere), Options());
     roomy.refineUniform(2);
     const StencilTable factorized = roomy.factorizedStencils(2);
-    EXPECT_EQ(factorized.numStencils(), roomy.level(2).numVertices);
+    EXPECT_EQ(factorized.numStencils(), roomy.faces(2).numVertices());
     EXPECT_LE(factorized.bytes() + roomy.bytes(), Options().memoryBudgetBytes);
 }
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "osd/cpu_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
 
 namespace quadtri::test {
 

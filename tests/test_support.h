@@ -1,11 +1,12 @@
 // Shared helpers of the tests: mesh paths, refinement plus evaluation, geometry.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tools/obj_io.h"
 
 namespace quadtri::test {
@@ -43,5 +44,10 @@ TopologyDescriptor descriptorOf(int numVertices, const std::vector<int>& sizes, 
 
 // Three stencils over four sources: 0.5 s0 + 0.5 s1, s3, 0.25 (s0 + s1 + s2 + s3).
 StencilTable handCheckedTable();
+
+// A level's face arrays as vectors, to compare levels with EXPECT_EQ.
+inline std::vector<int> cornersOf(const LevelFaces& f) { return {f.vertices(), f.vertices() + f.numCorners()}; }
+inline std::vector<int> offsetsOf(const LevelFaces& f) { return {f.offsets(), f.offsets() + f.numFaces() + 1}; }
+inline std::vector<uint8_t> holesOf(const LevelFaces& f) { return {f.holes(), f.holes() + f.numFaces()}; }
 
 }  // namespace quadtri::test

@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "osd/cpu_evaluator.h"
-#include "osd/tbb_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 #include "tests/test_support.h"
 
 namespace quadtri::test {

@@ -9,8 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
+#include "tests/test_support.h"
 
 namespace {
 
@@ -115,7 +116,7 @@ TEST(Validation, VertexIndexOutOfRange) {
                   "index 1000000", Component::Face, 2);
 }
 
-// A face that repeats a vertex is read as the simple loops it walks around (far/face_loops.h):
+// A face that repeats a vertex is read as the simple loops it walks around (far/internal/face_loops.h):
 // the result must be the same surface, bitwise, as the mesh written with those loops as faces,
 // with a warning naming the face and the vertex.
 void expectSameRefinement(const LocalMesh& degenerate, const LocalMesh& clean, const std::string& what) {
@@ -129,9 +130,9 @@ void expectSameRefinement(const LocalMesh& degenerate, const LocalMesh& clean, c
             b.refineUniform(2, TopologyDetail::Full);
             const std::string where = what + " under " + toString(scheme) + (leftHanded ? ", left-handed" : "");
             for (int L = 0; L <= 2; ++L) {
-                EXPECT_EQ(a.level(L).faceVerts, b.level(L).faceVerts) << where << " level " << L;
-                EXPECT_EQ(a.level(L).faceOffsets, b.level(L).faceOffsets) << where << " level " << L;
-                EXPECT_EQ(a.level(L).faceHole, b.level(L).faceHole) << where << " level " << L;
+                EXPECT_EQ(cornersOf(a.faces(L)), cornersOf(b.faces(L))) << where << " level " << L;
+                EXPECT_EQ(offsetsOf(a.faces(L)), offsetsOf(b.faces(L))) << where << " level " << L;
+                EXPECT_EQ(holesOf(a.faces(L)), holesOf(b.faces(L))) << where << " level " << L;
             }
             for (int L = 1; L <= 2; ++L) {
                 const StencilTable &ta = a.levelStencils(L), &tb = b.levelStencils(L);
@@ -238,7 +239,7 @@ TEST(Validation, IsolatedVerticesAndNoFaces) {
                 EXPECT_EQ(table.weightsOf(i)[0], 1.0f) << toString(scheme);
             }
             if (extra == 0) {
-                EXPECT_EQ(refiner.level(3).numFaces(), 0);
+                EXPECT_EQ(refiner.faces(3).numFaces(), 0);
             }
         }
     }
@@ -430,7 +431,7 @@ TEST(Validation, MemoryBudget) {
     Refiner facesOnly(m.descriptor(), Options()), full(m.descriptor(), Options());
     facesOnly.refineUniform(1);
     full.refineUniform(1, TopologyDetail::Full);
-    ASSERT_TRUE(facesOnly.level(1).edgeVerts.empty());
+    ASSERT_EQ(facesOnly.detail(1), TopologyDetail::FacesOnly);
     EXPECT_GE(facesOnly.estimateLevelBytes(2), full.estimateLevelBytes(2));
 }
 
@@ -439,8 +440,8 @@ TEST(Validation, RefineToLevelZeroAndNegativeLevels) {
     Refiner refiner(m.descriptor(), Options());
     EXPECT_NO_THROW(refiner.refineUniform(0));
     EXPECT_EQ(refiner.maxLevel(), 0);
-    EXPECT_EQ(refiner.level(0).numVertices, 8);
-    EXPECT_EQ(refiner.level(0).numFaces(), 6);
+    EXPECT_EQ(refiner.faces(0).numVertices(), 8);
+    EXPECT_EQ(refiner.faces(0).numFaces(), 6);
     EXPECT_EQ(refiner.level(0).numEdges(), 12);
     EXPECT_THROW(refiner.refineUniform(-1), TopologyError);
     EXPECT_EQ(refiner.maxLevel(), 0);

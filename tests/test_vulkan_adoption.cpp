@@ -6,8 +6,8 @@
 #include <cstring>
 #include <vector>
 
-#include "osd/cpu_evaluator.h"
-#include "osd/vulkan_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/vulkan_evaluator.h>
 #include "tests/test_support.h"
 #include "tests/vulkan_test_support.h"
 

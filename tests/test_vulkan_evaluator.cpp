@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "osd/cpu_evaluator.h"
-#include "osd/tbb_evaluator.h"
-#include "osd/vulkan_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
+#include <quadtri/osd/vulkan_evaluator.h>
 #include "tests/test_support.h"
 #include "tests/vulkan_test_support.h"
 

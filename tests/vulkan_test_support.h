@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "osd/buffer_descriptor.h"
-#include "osd/vulkan_context.h"
+#include <quadtri/osd/buffer_descriptor.h>
+#include <quadtri/osd/vulkan_context.h>
 
 namespace quadtri::test {
 

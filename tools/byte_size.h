@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "far/options.h"
+#include <quadtri/far/options.h>
 
 namespace quadtri::cli {
 

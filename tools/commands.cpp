@@ -10,8 +10,8 @@
 #include <map>
 #include <vector>
 
-#include "far/refiner.h"
-#include "osd/cpu_evaluator.h"
+#include <quadtri/far/refiner.h>
+#include <quadtri/osd/cpu_evaluator.h>
 #include "tools/obj_io.h"
 
 namespace quadtri::cli {
@@ -70,9 +70,7 @@ Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     return options;
 }
 
-int outputFaces(const Topology& t) {
-    return t.numFaces() - int(std::count_if(t.faceHole.begin(), t.faceHole.end(), [](uint8_t h) { return h != 0; }));
-}
+int outputFaces(const LevelFaces& faces) { return faces.numFaces() - faces.numHoles(); }
 
 template <typename T>
 int countFlag(const std::vector<uint8_t>& flags, T flag) {
@@ -102,7 +100,7 @@ void printBase(const Topology& t, const Options& options) {
     std::printf("scheme %s, boundary %s, crease method %s\n", toString(options.scheme), toString(options.boundary),
                 toString(options.creaseMethod));
     std::printf("vertices %d, faces %d, edges %d, holes %d\n", t.numVertices, t.numFaces(), t.numEdges(),
-                t.numFaces() - outputFaces(t));
+                LevelFaces(t).numHoles());
 
     std::map<int, int> sizes;
     for (int f = 0; f < t.numFaces(); ++f) ++sizes[t.faceSize(f)];
@@ -145,10 +143,10 @@ int runRefine(const RefineArgs& args) {
     std::vector<float> positions =
         args.level > 0 ? evaluateLevels(args.evaluator, refiner, args.level, mesh.positions) : mesh.positions;
     checkFinite(positions, mesh, args.level, options.scheme);
-    const Topology& top = refiner.level(args.level);
-    io::writeObj(args.output, positions.data(), top);
+    const LevelFaces faces = refiner.faces(args.level);
+    io::writeObj(args.output, positions.data(), faces);
     std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,
-                top.numVertices, outputFaces(top), args.output.c_str());
+                faces.numVertices(), outputFaces(faces), args.output.c_str());
     return 0;
 }
 
@@ -166,7 +164,7 @@ int runInfo(const InfoArgs& args) {
         const Topology& t = refiner.level(L);
         const int sharp = countSharpEdges(t).sharp;
         if (L == 0) {
-            std::printf("| 0 | %d | %d | %d | - | - | - |\n", t.numVertices, outputFaces(t), sharp);
+            std::printf("| 0 | %d | %d | %d | - | - | - |\n", t.numVertices, outputFaces(LevelFaces(t)), sharp);
             continue;
         }
         const StencilTable& perLevel = refiner.levelStencils(L);
@@ -177,7 +175,7 @@ int runInfo(const InfoArgs& args) {
             factorized = std::to_string(refiner.factorizedStencils(L).bytes());
         } catch (const MemoryBudgetError&) {
         }
-        std::printf("| %d | %d | %d | %d | %d | %zu | %s |\n", L, t.numVertices, outputFaces(t), sharp,
+        std::printf("| %d | %d | %d | %d | %d | %zu | %s |\n", L, t.numVertices, outputFaces(LevelFaces(t)), sharp,
                     perLevel.numStencils(), perLevel.bytes(), factorized.c_str());
     }
     return 0;
@@ -213,14 +211,14 @@ int runDemo(const DemoArgs& args) {
         std::nth_element(evalMs.begin(), evalMs.begin() + 3, evalMs.end());
 
         checkFinite(positions, mesh, L, options.scheme);
-        const Topology& t = refiner.level(L);
+        const LevelFaces faces = refiner.faces(L);
         char vulkanMs[32] = "-";
         if (vulkan) std::snprintf(vulkanMs, sizeof vulkanMs, "%.3f", vulkanEvalMs(*vulkan, table, mesh.positions, 7));
-        std::printf("| %d | %d | %d | %d | %zu | %.3f | %.3f | %s |\n", L, t.numVertices, outputFaces(t),
+        std::printf("| %d | %d | %d | %d | %zu | %.3f | %.3f | %s |\n", L, faces.numVertices(), outputFaces(faces),
                     table.numStencils(), table.bytes(), analyzerMs, evalMs[3], vulkanMs);
         std::fflush(stdout);
         io::writeObj((std::filesystem::path(args.outDir) / (stem + "_level" + std::to_string(L) + ".obj")).string(),
-                     positions.data(), t);
+                     positions.data(), faces);
     }
     return 0;
 }

@@ -8,12 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "far/options.h"
-#include "far/stencil_table.h"
-
-namespace quadtri {
-class Refiner;
-}
+#include <quadtri/far/options.h>
+#include <quadtri/far/refiner.h>
+#include <quadtri/far/stencil_table.h>
 
 namespace quadtri::cli {
 

@@ -2,9 +2,9 @@
 #include <optional>
 #include <utility>
 
-#include "far/refiner.h"
-#include "osd/cpu_evaluator.h"
-#include "osd/tbb_evaluator.h"
+#include <quadtri/far/refiner.h>
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 #include "tools/commands.h"
 
 namespace quadtri::cli {

@@ -6,8 +6,8 @@
 #include <map>
 #include <new>
 
-#include "far/options.h"
-#include "far/version.h"
+#include <quadtri/far/options.h>
+#include <quadtri/version.h>
 #include "tools/byte_size.h"
 #include "tools/commands.h"
 #include "tools/obj_io.h"

@@ -374,17 +374,17 @@ ObjMesh readObj(const std::string& path) {
     return parseObj(in, path);
 }
 
-void writeObj(std::ostream& out, const float* positions, const Topology& topology) {
+void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces) {
     char buf[128];
-    for (int v = 0; v < topology.numVertices; ++v) {
+    for (int v = 0; v < faces.numVertices(); ++v) {
         const float* p = positions + 3 * size_t(v);
         std::snprintf(buf, sizeof buf, "v %.9g %.9g %.9g\n", double(p[0]), double(p[1]), double(p[2]));
         out << buf;
     }
-    for (int f = 0; f < topology.numFaces(); ++f) {
-        if (size_t(f) < topology.faceHole.size() && topology.faceHole[f]) continue;
+    for (int f = 0; f < faces.numFaces(); ++f) {
+        if (faces.isHole(f)) continue;
         out << 'f';
-        for (int k = topology.faceOffsets[f]; k < topology.faceOffsets[f + 1]; ++k) out << ' ' << topology.faceVerts[k] + 1;
+        for (int v : faces.verticesOfFace(f)) out << ' ' << v + 1;
         out << '\n';
     }
 }
@@ -449,8 +449,8 @@ void writeReplacing(const std::string& path, const std::function<void(std::ostre
     }
 }
 
-void writeObj(const std::string& path, const float* positions, const Topology& topology) {
-    writeReplacing(path, [&](std::ostream& out) { writeObj(out, positions, topology); });
+void writeObj(const std::string& path, const float* positions, const LevelFaces& faces) {
+    writeReplacing(path, [&](std::ostream& out) { writeObj(out, positions, faces); });
 }
 
 }  // namespace quadtri::io

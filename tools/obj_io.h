@@ -9,8 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "far/options.h"
-#include "far/topology.h"
+#include <quadtri/far/options.h>
+#include <quadtri/far/level_faces.h>
+#include <quadtri/far/topology.h>
 
 namespace quadtri::io {
 
@@ -58,10 +59,10 @@ struct ObjMesh {
 ObjMesh parseObj(std::istream& in, const std::string& name);
 ObjMesh readObj(const std::string& path);  // ObjError if the file cannot be opened
 
-// Writes positions (3 floats each, %.9g) and the non-hole faces of `topology`, 1-based.
-void writeObj(std::ostream& out, const float* positions, const Topology& topology);
+// Writes positions (3 floats each, %.9g) and the non-hole faces, 1-based.
+void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces);
 // The same into the file `path`, through writeReplacing.
-void writeObj(const std::string& path, const float* positions, const Topology& topology);
+void writeObj(const std::string& path, const float* positions, const LevelFaces& faces);
 
 // Writes `path` through `write` into a temporary file beside it and renames that over `path` once
 // every byte is written and the file is closed, so that a failure or a kill leaves any old

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "far/refiner.h"
-#include "osd/vulkan_evaluator.h"
+#include <quadtri/far/refiner.h>
+#include <quadtri/osd/vulkan_evaluator.h>
 #include "tools/commands.h"
 
 namespace quadtri::cli {
@@ -29,7 +29,7 @@ std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner& refiner,
         for (const VulkanStencilTable& t : tables) pointers.push_back(&t);
         const std::vector<int> first = VulkanEvaluator::levelFirstElements(pointers);
         VulkanVertexBuffer all = VulkanVertexBuffer::create(ctx, first.back(), 3);
-        all.updateData(control.data(), 0, refiner.level(0).numVertices);
+        all.updateData(control.data(), 0, refiner.faces(0).numVertices());
         VulkanEvaluator evaluator(ctx);
         evaluator.EvalLevelsAndWait(all, d, pointers);
         std::vector<float> everything(std::size_t(first.back()) * 3);

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "osd/cpu_evaluator.h"
-#include "osd/tbb_evaluator.h"
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 
 namespace quadtri::fuzz {
 
@@ -26,15 +26,17 @@ std::string number(double x) {
 
 std::string tableName(const char* kind, int level) { return std::string(kind) + " table of level " + std::to_string(level); }
 
-void checkFaces(const Topology& t, int level) {
+void checkFaces(const LevelFaces& faces, int level) {
     std::string name = "level " + std::to_string(level);
-    if (t.faceOffsets.empty() || t.faceOffsets[0] != 0 || t.faceOffsets.back() != int(t.faceVerts.size()))
+    if (faces.offsets()[0] != 0 || faces.offsets()[faces.numFaces()] != faces.numCorners())
         fail(name + ": face offsets do not span the face vertices");
-    if (t.faceHole.size() != size_t(t.numFaces())) fail(name + ": hole flags are not one per face");
-    for (int f = 0; f < t.numFaces(); ++f)
-        if (t.faceSize(f) < 3) fail(name + ": face " + std::to_string(f) + " has " + std::to_string(t.faceSize(f)) + " corners");
-    for (int v : t.faceVerts)
-        if (v < 0 || v >= t.numVertices) fail(name + ": face vertex " + std::to_string(v) + " out of range");
+    if (faces.numFaces() > 0 && faces.holes() == nullptr) fail(name + ": no hole flags");
+    for (int f = 0; f < faces.numFaces(); ++f)
+        if (faces.faceSize(f) < 3)
+            fail(name + ": face " + std::to_string(f) + " has " + std::to_string(faces.faceSize(f)) + " corners");
+    for (int i = 0; i < faces.numCorners(); ++i)
+        if (faces.vertices()[i] < 0 || faces.vertices()[i] >= faces.numVertices())
+            fail(name + ": face vertex " + std::to_string(faces.vertices()[i]) + " out of range");
 }
 
 void checkTable(const StencilTable& t, int numSources, int numStencils, const std::string& name) {
@@ -138,19 +140,19 @@ void expectMessage(const std::exception& error) {
 void checkRefinement(const Refiner& refiner, const std::vector<float>& control) {
     for (const TopologyDiagnostic& w : refiner.warnings())
         if (w.message().empty()) fail("a warning without a message");
-    const int numControl = refiner.level(0).numVertices;
+    const int numControl = refiner.faces(0).numVertices();
     if (control.size() != 3 * size_t(numControl)) fail("level 0 does not have one vertex per control position");
-    checkFaces(refiner.level(0), 0);
+    checkFaces(refiner.faces(0), 0);
     const std::vector<double> controlBound = magnitudes(control);
     std::vector<float> positions = control;  // of level L, evaluated level by level
     std::vector<double> bound = controlBound;
     for (int L = 1; L <= refiner.maxLevel(); ++L) {
-        const Topology& child = refiner.level(L);
+        const LevelFaces child = refiner.faces(L);
         checkFaces(child, L);
 
         std::string perLevel = tableName("per-level", L);
         const StencilTable& table = refiner.levelStencils(L);
-        checkTable(table, refiner.level(L - 1).numVertices, child.numVertices, perLevel);
+        checkTable(table, refiner.faces(L - 1).numVertices(), child.numVertices(), perLevel);
         positions = evaluate(table, positions, perLevel);
         bound = propagate(table, bound);
         checkFinite(positions, bound, perLevel);
@@ -163,7 +165,7 @@ void checkRefinement(const Refiner& refiner, const std::vector<float>& control) 
             expectMessage(e);
             return;
         }
-        checkTable(direct, numControl, child.numVertices, factorized);
+        checkTable(direct, numControl, child.numVertices(), factorized);
         std::vector<float> out = evaluate(direct, control, factorized);
         std::vector<double> directBound = propagate(direct, controlBound);
         checkFinite(out, directBound, factorized);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "far/refiner.h"
+#include <quadtri/far/refiner.h>
 
 namespace quadtri::fuzz {
 

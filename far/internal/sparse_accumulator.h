@@ -9,6 +9,7 @@
 #include <vector>
 
 namespace quadtri {
+inline namespace v0 {
 
 class SparseAccumulator {
 public:
@@ -84,4 +85,5 @@ private:
     std::vector<double> weights_;
 };
 
+}  // namespace v0
 }  // namespace quadtri

@@ -19,9 +19,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "far/stam_loop.h"
+#include "far/internal/stam_loop.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 class CatmarkButterflyMasks : public StamLoopMasks {
 public:
@@ -86,4 +87,5 @@ private:
 
 const SchemeRules& catmarkButterflyRules();
 
+}  // namespace v0
 }  // namespace quadtri

@@ -3,10 +3,12 @@
 // piece is subdivided on its own and the averaging pass zips the seam closed, C2 across it.
 #pragma once
 
-#include "far/stencil_table.h"
-#include "far/topology.h"
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/far/topology.h>
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 enum class Piece { Triangle, Quad };
 
@@ -20,4 +22,5 @@ bool isNetworkEdge(const Topology& topology, int edge);
 // is v itself, and so is it at a crease or corner vertex with a semi-sharp crease (unzip.cpp).
 StencilTableD unzipStencils(const Topology& topology, Piece piece);
 
+}  // namespace v0
 }  // namespace quadtri

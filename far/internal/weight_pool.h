@@ -6,6 +6,7 @@
 #include <vector>
 
 namespace quadtri {
+inline namespace v0 {
 
 class WeightPool {
 public:
@@ -38,4 +39,5 @@ private:
     int used_ = 0;
 };
 
+}  // namespace v0
 }  // namespace quadtri

@@ -15,6 +15,7 @@
 #include <vector>
 
 namespace quadtri {
+inline namespace v0 {
 
 // What splitting one face did, for the warning that names it.
 struct FaceLoops {
@@ -45,4 +46,5 @@ private:
     CollapsedEdges collapsed_;
 };
 
+}  // namespace v0
 }  // namespace quadtri

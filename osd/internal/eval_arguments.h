@@ -3,11 +3,13 @@
 // messages.
 #pragma once
 
-#include "far/stencil_table.h"
+#include <quadtri/far/stencil_table.h>
 #include "kernels/stencil_kernel.h"
-#include "osd/buffer_descriptor.h"
+#include <quadtri/osd/buffer_descriptor.h>
 
-namespace quadtri::detail {
+namespace quadtri {
+inline namespace v0 {
+namespace detail {
 
 // Checks the arguments of an EvalStencils call over a table of `numStencils` stencils and
 // resolves end < 0 to numStencils. srcPresent / dstPresent say whether the caller passed a
@@ -24,4 +26,6 @@ inline kernels::StencilArrays stencilArrays(const StencilTable& table) {
                                   table.weights.data()};
 }
 
-}  // namespace quadtri::detail
+}  // namespace detail
+}  // namespace v0
+}  // namespace quadtri

@@ -3,10 +3,11 @@
 // bit for bit.
 #pragma once
 
-#include "far/options.h"
-#include "far/topology.h"
+#include <quadtri/far/options.h>
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 inline bool isSharp(float s) { return s > 0.0f; }
 inline bool isInfinite(float s) { return s >= kInfiniteSharpness; }
@@ -43,4 +44,5 @@ void childEdgeSharpnessAtVertex(const Topology& topology, int v, CreaseMethod me
 float transitionWeight(float parentVertexSharpness, float childVertexSharpness, int edgeCount,
                        const float* parentEdgeSharpness, const float* childEdgeSharpness);
 
+}  // namespace v0
 }  // namespace quadtri

@@ -10,9 +10,10 @@
 
 #include <vector>
 
-#include "far/topology.h"
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 class RegularMasks {
 public:
@@ -77,4 +78,5 @@ private:
     std::vector<int> weights_;  // per key
 };
 
+}  // namespace v0
 }  // namespace quadtri

@@ -5,9 +5,10 @@
 
 #include <vector>
 
-#include "far/topology.h"
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 // How a triangle of the parent level is split (SchemeRules::triangleSplit). Quads and n-gons
 // always become quads around a face point.
@@ -38,4 +39,5 @@ ChildNumbering numberChildren(const Topology& parent, TriangleSplit split = Tria
 Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod,
                         TopologyDetail detail = TopologyDetail::Full);
 
+}  // namespace v0
 }  // namespace quadtri

@@ -11,9 +11,10 @@
 // derive from these masks and replace the ones they change.
 #pragma once
 
-#include "far/scheme.h"
+#include "far/internal/scheme.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 // η of the Stam-Loop correction v2 = v1 + η (v1 - v0) for a smooth vertex with nE incident
 // edges, nQ quad-like and nT triangular faces (docs/schemes/stam_loop.md, §3).
@@ -30,4 +31,5 @@ protected:
 
 const SchemeRules& stamLoopRules();
 
+}  // namespace v0
 }  // namespace quadtri

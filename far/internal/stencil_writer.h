@@ -9,11 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "far/sparse_accumulator.h"
-#include "far/stencil_table.h"
-#include "far/weight_pool.h"
+#include "far/internal/sparse_accumulator.h"
+#include <quadtri/far/stencil_table.h>
+#include "far/internal/weight_pool.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 // Appends each accumulated mask to the table being built. The float table interns the mask's
 // weights in the level's pool, so identical masks share one copy; the double table (analysis
@@ -140,4 +142,5 @@ private:
     }
 };
 
+}  // namespace v0
 }  // namespace quadtri

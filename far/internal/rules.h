@@ -2,12 +2,14 @@
 // scheme's own masks (far/scheme.h).
 #pragma once
 
-#include "far/options.h"
-#include "far/refine_topology.h"
-#include "far/stencil_table.h"
-#include "far/topology.h"
+#include <quadtri/far/options.h>
+#include "far/internal/refine_topology.h"
+#include <quadtri/far/stencil_table.h>
+#include <quadtri/far/topology.h>
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 // Masks of the child vertices of `parent`, in the child order of `numbering` (which must split
 // triangles as options.scheme does).
@@ -18,4 +20,5 @@ namespace quadtri {
 template <typename Table>
 Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering, const Options& options);
 
+}  // namespace v0
 }  // namespace quadtri

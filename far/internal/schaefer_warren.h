@@ -9,10 +9,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "far/stam_loop.h"
-#include "far/stencil_table.h"
+#include "far/internal/stam_loop.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 // What every mask of a level reads: each vertex's copies in the unzipped pieces (as stencils over
 // the level's vertices) and which faces have a vertex on the network. Built once per level and
@@ -59,4 +60,5 @@ private:
 
 const SchemeRules& schaeferWarrenRules();
 
+}  // namespace v0
 }  // namespace quadtri

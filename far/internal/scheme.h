@@ -11,14 +11,15 @@
 #include <memory>
 #include <vector>
 
-#include "far/crease.h"
-#include "far/face_loops.h"
-#include "far/options.h"
-#include "far/refine_topology.h"
-#include "far/sparse_accumulator.h"
-#include "far/topology.h"
+#include "far/internal/crease.h"
+#include "far/internal/face_loops.h"
+#include <quadtri/far/options.h>
+#include "far/internal/refine_topology.h"
+#include "far/internal/sparse_accumulator.h"
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
+inline namespace v0 {
 
 // What a scheme computes once per level and shares, read-only, among the threads building the
 // level's masks (Schaefer-Warren's unzipped copies).
@@ -109,4 +110,5 @@ public:
 // The registry (schemes.cpp): the rules of a scheme, and every scheme in listing order.
 const SchemeRules& rulesOf(Scheme scheme);
 
+}  // namespace v0
 }  // namespace quadtri

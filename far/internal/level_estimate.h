@@ -3,9 +3,10 @@
 
 #include <cstddef>
 
-#include "far/scheme.h"
+#include "far/internal/scheme.h"
 
 namespace quadtri {
+inline namespace v0 {
 
 // Edges of a level, or a bound when it holds its faces only (one per corner: an open mesh's
 // count).
@@ -20,4 +21,5 @@ inline std::size_t tableEntryBytes(std::size_t count) { return 2 * count * sizeo
 // (SchemeRules::extraLevelBytes). `parent` may hold its faces only (a looser bound then).
 std::size_t estimateLevelBytes(const Topology& parent, const SchemeRules& rules);
 
+}  // namespace v0
 }  // namespace quadtri

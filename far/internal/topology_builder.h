@@ -1,0 +1,32 @@
+// Building level 0 from the descriptor: validation, edges, incidences and flags.
+#pragma once
+
+#include <vector>
+
+#include <quadtri/far/options.h>
+#include <quadtri/far/topology.h>
+
+namespace quadtri {
+inline namespace v0 {
+
+// Checks the descriptor (throws TopologyError naming the face or vertex) and builds level 0:
+// edges, incidences, sharpness, boundary / non-manifold / seam flags, holes (including the
+// faces that BoundaryInterpolation::None turns into holes). What is accepted with a change (a
+// crease on a pair that is not an edge is ignored, as OpenSubdiv does) is appended to `warnings`.
+Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
+                           std::vector<TopologyDiagnostic>* warnings = nullptr);
+
+// Throws TopologyError for malformed input; called by buildBaseTopology before anything else.
+void validateDescriptor(const TopologyDescriptor& desc);
+
+// Fills edges, incidences and flags of a topology whose numVertices, faceOffsets and faceVerts
+// are set. Sharpness arrays are sized and zeroed. Used for level 0; refined levels know their
+// edges and flags by construction (refine_topology.cpp).
+void completeTopology(Topology& topology);
+
+// Fills the edge-face, vertex-face and vertex-edge incidences from faceVerts, faceEdges and
+// edgeVerts.
+void buildIncidences(Topology& topology);
+
+}  // namespace v0
+}  // namespace quadtri
