@@ -319,13 +319,14 @@ private:
 
     // Halves of a parent edge keep its boundary / non-manifold / seam flags; interior edges have
     // two faces of one parent: none. Vertex points keep their parent's flags, edge points take
-    // their edge's, face points none; but triangles split into quads leave no triangle, so no
-    // seam, in the child.
+    // their edge's, face points none. When triangles split into quads every child is a quad, so
+    // no seam is left.
     void flags() {
         c_.edgeFlags.assign(c_.numEdges(), 0);
         c_.vertFlags.assign(c_.numVertices, 0);
-        const bool seams = num_.triangleSplit == TriangleSplit::FourTriangles;
-        const uint8_t edgeKept = seams ? 0xFF : uint8_t(~kEdgeSeam), vertexKept = seams ? 0xFF : uint8_t(~kVertexSeam);
+        const bool seamsStay = num_.triangleSplit == TriangleSplit::FourTriangles;
+        const uint8_t edgeKept = seamsStay ? 0xff : uint8_t(~kEdgeSeam);
+        const uint8_t vertexKept = seamsStay ? 0xff : uint8_t(~kVertexSeam);
         forEach(p_.numEdges(), [&](int e) {
             const uint8_t f = p_.edgeFlags[e] & edgeKept;
             c_.edgeFlags[2 * e] = c_.edgeFlags[2 * e + 1] = f;

@@ -68,10 +68,10 @@ TEST(RefineTopology, ChildLevelsEqualTheGenericBuilder) {
     }
 }
 
-// Triangles split into three quads (catmull-clark). A collapsed edge's two halves join the same
-// two vertices, which the generic builder would merge into one edge: that shape's halves are
-// checked in test_catmull_clark instead.
-TEST(RefineTopology, ThreeQuadTriangleSplitEqualsTheGenericBuilder) {
+// Levels 1 and 2 under catmull-clark (its triangle split, its sharpness and flags). A collapsed
+// edge's two halves join the same two vertices, which the generic builder would merge into one
+// edge: that shape's halves are checked in test_catmull_clark instead.
+TEST(RefineTopology, CatmullClarkLevelsEqualTheGenericBuilder) {
     Options catmullClark;
     catmullClark.scheme = Scheme::CatmullClark;
     for (const std::string& name : allMeshes()) {
@@ -82,6 +82,25 @@ TEST(RefineTopology, ThreeQuadTriangleSplitEqualsTheGenericBuilder) {
         refiner.refineUniform(levels, TopologyDetail::Full);
         for (int f = 0; f < refiner.level(1).numFaces(); ++f) ASSERT_EQ(refiner.level(1).faceSize(f), 4) << name;
         for (int L = 1; L <= levels; ++L) expectSameConnectivity(refiner.level(L), name + " level " + std::to_string(L));
+    }
+}
+
+// A scheme may split triangles into three quads around a face point (TriangleSplit::ThreeQuads,
+// as Catmull-Clark does): every face then has a face point and every child is a quad, and the
+// child level built by construction still equals the generic builder's.
+TEST(RefineTopology, TrianglesSplitIntoThreeQuadsEqualTheGenericBuilder) {
+    for (const std::string& name : allMeshes()) {
+        const io::ObjMesh mesh = io::readObj(meshPath(name));
+        Refiner refiner(mesh.descriptor(), mesh.applyTags(Options()));
+        const Topology& p = refiner.level(0);
+        const ChildNumbering num = numberChildren(p, TriangleSplit::ThreeQuads);
+        ASSERT_EQ(num.numFacePoints, p.numFaces()) << name;
+        const Topology c = refineTopology(p, num, CreaseMethod::Uniform);
+        int corners = 0;
+        for (int f = 0; f < p.numFaces(); ++f) corners += p.faceSize(f);
+        ASSERT_EQ(c.numFaces(), corners) << name;
+        for (int f = 0; f < c.numFaces(); ++f) ASSERT_EQ(c.faceSize(f), 4) << name << " child face " << f;
+        expectSameConnectivity(c, name + " split into quads");
     }
 }
 

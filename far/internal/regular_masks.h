@@ -3,7 +3,7 @@
 // whose n faces are all triangles (Loop, weights by n), and the same for quads (Catmull-Clark:
 // an edge between two quads; a vertex whose n faces are all quads). After a level or two nearly
 // every child of a pure or mostly pure mesh is one of these. The first mask of each key is built
-// by the rules (rules.cpp); if the rules listed exactly the vertices gathered here, in the same
+// by the scheme's rules (rules.cpp); if they listed exactly the vertices gathered here, in the same
 // order, its pooled weights serve every later mask of the key, which then only gathers its
 // vertices: the table is the one the rules build, without their arithmetic.
 #pragma once

@@ -1,5 +1,5 @@
 // The masks of a level's child vertices: the crease rules every scheme shares, around the
-// scheme's own masks (far/scheme.h).
+// scheme's own masks (far/internal/scheme.h).
 #pragma once
 
 #include <quadtri/far/options.h>

@@ -2,7 +2,7 @@
 // object (its name, how its faces split, what it prepares per level, its memory) and the
 // SchemeMasks it makes for each worker, which append the weighted parent vertices of one child
 // mask to the worker's accumulator. Everything else is shared by every scheme and lives in one
-// place: crease decay, rule transitions and semi-sharp blends (rules.cpp call the hooks below
+// place: crease decay, rule transitions and semi-sharp blends (rules.cpp calls the hooks below
 // with a scale), the child numbering and topology (refine_topology.cpp, from triangleSplit()),
 // the common memory estimate (level_estimate.cpp). Adding a scheme: docs/architecture.md.
 #pragma once
