@@ -65,6 +65,8 @@ const char* describe(Scheme scheme) {
     return r ? r->rules().description() : "?";
 }
 
+bool takesSmoothTriangles(Scheme scheme) { return rulesOf(scheme).acceptsSmoothTriangles(); }
+
 std::optional<Scheme> schemeNamed(std::string_view name) {
     for (const Registered& r : kSchemes)
         if (name == r.rules().name()) return r.scheme;

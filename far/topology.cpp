@@ -12,8 +12,6 @@
 namespace quadtri {
 inline namespace v0 {
 
-bool takesSmoothTriangles(Scheme scheme) { return rulesOf(scheme).acceptsSmoothTriangles(); }
-
 const char* toString(BoundaryInterpolation boundary) {
     switch (boundary) {
     case BoundaryInterpolation::EdgeOnly: return "edge-only";

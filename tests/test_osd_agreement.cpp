@@ -463,6 +463,43 @@ TEST(OsdReference, LoopTetrahedron) {
     EXPECT_TRUE(containsPoint(r.positions[1], 0.0f, 0.0f, 0.5f));
 }
 
+// Collapsed edges anywhere in a face, as catmull-clark reads them: catmark_nonman_quadpole8 with
+// its `f 4 3 5 5` quads rotated so that the collapsed edge wraps around (`5 4 3 5`) or sits first
+// (`5 5 4 3`), and one made a pentagon with two collapsed edges in a row (`4 3 5 5 5`), with a
+// crease and the left-handed flag; OpenSubdiv refines the same faces.
+TEST(OsdAgreementCollapsedEdges, RotatedAndRepeated) {
+    io::ObjMesh mesh = io::readObj(meshPath("osd/catmark_nonman_quadpole8.obj"));
+    std::vector<int> sizes, verts;
+    for (int f = 0, b = 0; f < mesh.numFaces(); b += mesh.faceSizes[f++]) {
+        std::vector<int> face(mesh.faceVerts.begin() + b, mesh.faceVerts.begin() + b + mesh.faceSizes[f]);
+        if (f == 1) face.push_back(face.back());                               // 4 3 5 5 5
+        if (f == 3) std::rotate(face.begin(), face.begin() + 3, face.end());  // 5 3 7 5
+        if (f == 5) std::rotate(face.begin(), face.begin() + 2, face.end());  // 5 5 7 9
+        sizes.push_back(int(face.size()));
+        verts.insert(verts.end(), face.begin(), face.end());
+    }
+    mesh.faceSizes = sizes;
+    mesh.faceVerts = verts;
+    mesh.creasePairs = {0, 1};
+    mesh.creaseSharpness = {2.5f};
+    for (bool leftHanded : {false, true}) {
+        Options options;
+        options.scheme = Scheme::CatmullClark;
+        options.leftHanded = leftHanded;
+        Refiner refiner(mesh.descriptor(), options);
+        refiner.refineUniform(3, TopologyDetail::Full);
+        const std::vector<std::vector<float>> ours = evaluateLevels(refiner, mesh.positions, 3);
+        const OsdRefinement osd = osdRefine(mesh, OsdScheme::Catmark, options.boundary, options.creaseMethod, 3);
+        const double diagonal = boundingBoxDiagonal(mesh.positions);
+        for (int L = 1; L <= 3; ++L) {
+            const PositionMatch m = matchPositions(ours[L], osd.positions[L], diagonal, kTolerance);
+            EXPECT_TRUE(m.countsEqual) << "level " << L << ": " << m.numOurs << " vs " << m.numReference;
+            EXPECT_LE(m.maxRelative(), kTolerance) << "level " << L << (leftHanded ? " left-handed" : "");
+            EXPECT_EQ(refiner.level(L).numFaces(), osd.numFaces[L]) << "level " << L;
+        }
+    }
+}
+
 // The smooth-triangle cases compare something: OpenSubdiv's two triangle rules differ at level 1
 // next to the pyramid's triangles, and agree where there is no triangle.
 TEST(OsdReference, SmoothTrianglesChangeTriangleEdgesOnly) {
