@@ -35,6 +35,12 @@ FaceLoops FaceLoopSplitter::split(const int* verts, int n, std::vector<int>& fac
     for (int v : walk_) position_[std::size_t(v)] = -1;
     if (!walk_.empty()) emit(0);
     if (result.loops + result.leftOut == 0) result.leftOut = 1;  // every corner the same vertex
+    const bool onlyCollapsed = result.repeated < 0 && result.loops == 1 && faceSizes.back() < n;
+    if (collapsed_ == CollapsedEdges::Keep && onlyCollapsed) {  // the one loop becomes the face as given
+        faceVerts.resize(faceVerts.size() - std::size_t(faceSizes.back()));
+        faceVerts.insert(faceVerts.end(), verts, verts + n);
+        faceSizes.back() = n;
+    }
     return result;
 }
 

@@ -18,6 +18,8 @@ enum class Scheme {
     StamLoop,  // Stam-Loop quad/triangle: Catmull-Clark on quads, Loop on triangles, corrected mixed vertices
     SchaeferWarren,  // Stam-Loop plus unzipping of the tri/quad network: C2 across the ordinary seam
     CatmarkButterfly,  // Catmull-Clark on quads, interpolating Butterfly on triangles (docs/catmark_butterfly/)
+    CatmullClark,  // OpenSubdiv's Catmark exactly: every face, triangles too, split into quads (docs/schemes/catmull_clark.md)
+    Loop,          // OpenSubdiv's Loop exactly, on triangle meshes only (docs/schemes/loop.md)
 };
 
 enum class BoundaryInterpolation {
@@ -37,6 +39,10 @@ struct Options {
     CreaseMethod creaseMethod = CreaseMethod::Uniform;
     // Faces are listed clockwise. Only the orientation of faces depends on it; no weight does.
     bool leftHanded = false;
+    // OpenSubdiv's smooth-triangle rule (Sdc::Options::TRI_SUB_SMOOTH): edges beside a triangle
+    // weigh the face points more. Catmull-Clark only; under any other scheme the Refiner refuses
+    // it with a TopologyError.
+    bool smoothTriangles = false;
     // A refinement whose estimated tables and output exceed this many bytes is refused.
     std::size_t memoryBudgetBytes = std::size_t(4) << 30;
 };
@@ -48,6 +54,8 @@ constexpr float kInfiniteSharpness = 10.0f;
 // vertex is read as the simple loops it walks around (far/internal/face_loops.h): `4 3 5 5` is the
 // triangle `4 3 5`, `1 2 3 1 4 5` the triangles `1 2 3` and `1 4 5`, and `1 1 2 2` has no area
 // and is left out (Refiner::warnings() says so, except for collapsed edges like `4 3 5 5`).
+// Catmull-Clark, which must equal OpenSubdiv, keeps `4 3 5 5` as the quad it is, with an edge
+// from 5 to 5, as OpenSubdiv does.
 struct TopologyDescriptor {
     int numVertices = 0;
     int numFaces = 0;
@@ -119,6 +127,9 @@ const char* toString(Scheme scheme);  // the scheme's name: "stam-loop"
 const std::vector<Scheme>& allSchemes();
 const char* describe(Scheme scheme);
 std::optional<Scheme> schemeNamed(std::string_view name);
+// Whether Options::smoothTriangles applies to the scheme (catmull-clark); the Refiner refuses it
+// elsewhere.
+bool takesSmoothTriangles(Scheme scheme);
 const char* toString(BoundaryInterpolation boundary);
 const char* toString(CreaseMethod method);
 

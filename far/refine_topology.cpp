@@ -72,6 +72,31 @@ public:
 
 private:
     int half(int e, int v) const { return 2 * e + (p_.edgeVerts[2 * e] == v ? 0 : 1); }
+    // A collapsed edge (both ends v; kept only by schemes that read faces as OpenSubdiv does) has
+    // two halves between the same two vertices: the corner that leaves it takes the first, the
+    // corner that enters it the second (docs/schemes/catmull_clark.md).
+    bool collapsed(int e) const { return p_.edgeVerts[2 * e] == p_.edgeVerts[2 * e + 1]; }
+    int halfLeaving(int e, int v) const { return collapsed(e) ? 2 * e : half(e, v); }
+    int halfEntering(int e, int v) const { return collapsed(e) ? 2 * e + 1 : half(e, v); }
+    // The child faces at vertex v's corners, in vertFaces order. A face with a collapsed edge
+    // at v is listed twice in a row, once per corner v has in it.
+    void fillVertexFaces(int v, int* out) const {
+        int last = -1, corner = -1;
+        for (int f : p_.facesOfVertex(v)) {
+            const IndexSpan corners = p_.verticesOfFace(f);
+            corner = f == last ? corner + 1 : 0;
+            while (corners[corner] != v) ++corner;
+            last = f;
+            *out++ = firstChildFace_[f] + corner;
+        }
+    }
+    // The halves of v's edges at v, in vertEdges order; a collapsed edge is listed twice in a
+    // row, once per half.
+    void fillVertexHalves(int v, int* out) const {
+        const IndexSpan edges = p_.edgesOfVertex(v);
+        for (int i = 0; i < edges.size(); ++i)
+            *out++ = i > 0 && edges[i - 1] == edges[i] ? halfEntering(edges[i], v) : halfLeaving(edges[i], v);
+    }
     bool inFour(int faceSize) const { return num_.splitsInFour(faceSize); }
     // Interior edge j of face f, j in [-1, n]: wraps without a division.
     int interior(int f, int j) const {
@@ -105,14 +130,14 @@ private:
             for (int i = 0, last = n - 1; i < n; last = i++) {  // corner i's child keeps the parent's orientation
                 const int v = corners[i], e = sides[i], prev = sides[last];
                 offsets[i] = corner + k;
-                put(k++, num_.vertexPoint(v), [&] { return half(e, v); });
+                put(k++, num_.vertexPoint(v), [&] { return halfLeaving(e, v); });
                 if (four) {
                     put(k++, num_.edgePoint(e), [&] { return interior(f, last); });
                 } else {
                     put(k++, num_.edgePoint(e), [&] { return interior(f, i); });
                     put(k++, num_.facePoint[f], [&] { return interior(f, last); });
                 }
-                put(k++, num_.edgePoint(prev), [&] { return half(prev, v); });
+                put(k++, num_.edgePoint(prev), [&] { return halfEntering(prev, v); });
             }
             if (four) {
                 offsets[3] = corner + k;
@@ -234,7 +259,7 @@ private:
                 for (int j = 0; j < p_.faceSize(i); ++j) out[j] = firstChildFace_[i] + j;
                 return;
             case Kind::Vertex:
-                for (int f : p_.facesOfVertex(i)) *out++ = firstChildFace_[f] + p_.cornerOfVertex(f, i);
+                fillVertexFaces(i, out);
                 return;
             case Kind::Edge: break;
             }
@@ -270,7 +295,7 @@ private:
                 for (int j = 0; j < p_.faceSize(i); ++j) out[j] = firstInterior_[i] + j;
                 return;
             case Kind::Vertex:
-                for (int e : p_.edgesOfVertex(i)) *out++ = half(e, i);
+                fillVertexHalves(i, out);
                 return;
             case Kind::Edge: break;
             }
@@ -331,9 +356,12 @@ void inheritSharpness(const Topology& p, const ChildNumbering& num, CreaseMethod
         const int n = p.vertexEdgeCount(v);
         childSharpness.resize(n);
         childEdgeSharpnessAtVertex(p, v, method, childSharpness.data());
+        const IndexSpan edges = p.edgesOfVertex(v);
         for (int i = 0; i < n; ++i) {
-            const int e = p.edgesOfVertex(v)[i];
-            c.edgeSharpness[2 * e + (p.edgeVerts[2 * e] == v ? 0 : 1)] = childSharpness[i];
+            // A collapsed edge is listed twice in a row: its first half, then its second.
+            const int e = edges[i];
+            const bool second = p.edgeVerts[2 * e] != v || (i > 0 && edges[i - 1] == e);
+            c.edgeSharpness[2 * e + (second ? 1 : 0)] = childSharpness[i];
         }
     }
 }

@@ -13,6 +13,8 @@ const SchemeRules& schaeferWarrenRules();
 const SchemeRules& stamLoopRules();
 const SchemeRules& catmarkButterflyRules();
 const SchemeRules& bilinearRules();
+const SchemeRules& catmullClarkRules();
+const SchemeRules& loopRules();
 
 namespace {
 
@@ -26,6 +28,8 @@ constexpr Registered kSchemes[] = {
     {Scheme::StamLoop, stamLoopRules},
     {Scheme::CatmarkButterfly, catmarkButterflyRules},
     {Scheme::Bilinear, bilinearRules},
+    {Scheme::CatmullClark, catmullClarkRules},
+    {Scheme::Loop, loopRules},
 };
 
 const Registered* find(Scheme scheme) {
@@ -60,6 +64,8 @@ const char* describe(Scheme scheme) {
     const Registered* r = find(scheme);
     return r ? r->rules().description() : "?";
 }
+
+bool takesSmoothTriangles(Scheme scheme) { return rulesOf(scheme).acceptsSmoothTriangles(); }
 
 std::optional<Scheme> schemeNamed(std::string_view name) {
     for (const Registered& r : kSchemes)

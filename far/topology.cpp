@@ -71,7 +71,9 @@ void countsToOffsets(std::vector<int>& offsets) {
 
 // Edges keyed by their lower vertex: corners are bucketed by min(a, b) with a counting sort,
 // and within a bucket each upper vertex remembers its edge (a pole's bucket holds thousands, so
-// no linear search there). No hashing, no maps.
+// no linear search there). No hashing, no maps. A collapsed edge (a corner followed by the same
+// vertex, kept by schemes that read faces as OpenSubdiv does) is an edge of its own in every
+// face, as OpenSubdiv makes it: it joins nothing.
 void buildEdges(Topology& t) {
     const int nv = t.numVertices;
     const int nc = t.numFaceVertices();
@@ -97,6 +99,12 @@ void buildEdges(Topology& t) {
         for (int k = bucketOffsets[lo]; k < bucketOffsets[lo + 1]; ++k) {
             const int c = bucket[k];
             const int hi = std::max(t.faceVerts[c], cornerNext[c]);
+            if (hi == lo) {
+                t.faceEdges[c] = t.numEdges();
+                t.edgeVerts.push_back(lo);
+                t.edgeVerts.push_back(hi);
+                continue;
+            }
             int& e = edgeToHi[hi];
             if (e < firstEdge) {
                 e = t.numEdges();
@@ -111,20 +119,25 @@ void buildEdges(Topology& t) {
 // Face f's edge from v to its next corner.
 int edgeFrom(const Topology& t, int f, int v) { return t.edgeOfCorner(f, t.cornerOfVertex(f, v)); }
 
+// Whether face f runs along edge e from its first vertex to its second. Found by the edge, not by
+// the vertex: a face with a collapsed edge holds a vertex twice.
+bool runsForward(const Topology& t, int f, int e) { return t.verticesOfFace(f)[t.cornerOfEdge(f, e)] == t.edgeVerts[2 * e]; }
+
 void flagEdges(Topology& t) {
     const int ne = t.numEdges();
     t.edgeFlags.assign(ne, 0);
     for (int e = 0; e < ne; ++e) {
         const IndexSpan faces = t.facesOfEdge(e);
         const int nf = faces.size();
-        if (nf == 1) {
+        if (t.edgeVerts[2 * e] == t.edgeVerts[2 * e + 1]) {
+            t.edgeFlags[e] |= kEdgeBoundary | kEdgeNonManifold;  // a collapsed edge, as OpenSubdiv tags it
+        } else if (nf == 1) {
             t.edgeFlags[e] |= kEdgeBoundary;
         } else if (nf > 2) {
             t.edgeFlags[e] |= kEdgeNonManifold;
         } else {
             // Two faces crossing the edge the same way disagree on orientation: not a manifold pair.
-            const int a = t.edgeVerts[2 * e];
-            const bool sameWay = (edgeFrom(t, faces[0], a) == e) == (edgeFrom(t, faces[1], a) == e);
+            const bool sameWay = runsForward(t, faces[0], e) == runsForward(t, faces[1], e);
             if (sameWay || faces[0] == faces[1]) {
                 t.edgeFlags[e] |= kEdgeNonManifold;
             } else if ((t.faceSize(faces[0]) == 3) != (t.faceSize(faces[1]) == 3)) {
@@ -253,26 +266,32 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     for (int f = 0; f < desc.numFaces; ++f) corners += std::size_t(desc.numVertsPerFace[f]);
     const std::size_t estimate = std::size_t(desc.numVertices) * 32 + corners * 64 + std::size_t(desc.numFaces) * 16;
     if (estimate > options.memoryBudgetBytes) throw MemoryBudgetError("level 0", estimate, 0, options.memoryBudgetBytes);
+    const SchemeRules& rules = rulesOf(options.scheme);
+    // As the descriptor has it, before collapsed corners are merged: OpenSubdiv refuses `1 2 3 3`
+    // under Loop too.
+    if (!rules.acceptsNonTriangles()) {
+        for (int f = 0; f < desc.numFaces; ++f)
+            if (desc.numVertsPerFace[f] != 3)
+                throw TopologyError({TopologyDiagnostic::Component::Face, f, -1,
+                                     "has " + std::to_string(desc.numVertsPerFace[f]) + " corners; the " +
+                                         rules.name() + " scheme takes triangles only"});
+    }
+    if (options.smoothTriangles && !rules.acceptsSmoothTriangles())
+        throw TopologyError(std::string("smooth triangles (Options::smoothTriangles) are a catmull-clark rule; ") +
+                            rules.name() + " has none");
     Topology t;
     t.numVertices = desc.numVertices;
     // Faces become the simple loops they walk around (face_loops.h); firstFace maps each face of
     // the descriptor to its loops, for holes.
     std::vector<int> sizes, firstFace(size_t(desc.numFaces) + 1, 0);
     sizes.reserve(size_t(desc.numFaces));
-    FaceLoopSplitter splitter(desc.numVertices);
-    const SchemeRules& rules = rulesOf(options.scheme);
+    FaceLoopSplitter splitter(desc.numVertices, rules.collapsedEdges());
     const int* verts = desc.faceVertIndices;
     for (int f = 0; f < desc.numFaces; ++f) {
         const int n = desc.numVertsPerFace[f];
         const FaceLoops loops = splitter.split(verts, n, t.faceVerts, sizes);
         verts += n;
         firstFace[size_t(f) + 1] = int(sizes.size());
-        if (!rules.acceptsNonTriangles())
-            for (int i = firstFace[size_t(f)]; i < firstFace[size_t(f) + 1]; ++i)
-                if (sizes[size_t(i)] != 3)
-                    throw TopologyError({TopologyDiagnostic::Component::Face, f, -1,
-                                         "has " + std::to_string(sizes[size_t(i)]) + " corners; the " +
-                                             rules.name() + " scheme takes triangles only"});
         if (warnings && (loops.repeated >= 0 || loops.loops == 0))
             warnings->push_back({TopologyDiagnostic::Component::Face, f, loops.repeated,
                                  describeLoops(loops)});

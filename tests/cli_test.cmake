@@ -92,6 +92,18 @@ count_lines("${WORK}/cylinder_cb.obj" "v " vertices)
 expect_equal("'v' lines of catmark-butterfly level 1" "${vertices}" 130)
 run(0 info "${CYLINDER}" --level 1 --scheme catmark-butterfly)
 expect_contains("${OUT}" "scheme catmark-butterfly")
+# catmull-clark splits the caps' triangles into quads too (144 corners: 144 quads), with or
+# without the smooth-triangle rule; loop refuses the body's quads, naming the first in the file's
+# numbering; the smooth-triangle rule is catmull-clark's alone.
+run(0 refine "${CYLINDER}" --level 1 --scheme catmull-clark --smooth-triangles -o "${WORK}/cylinder_cc.obj")
+count_lines("${WORK}/cylinder_cc.obj" "f " faces)
+expect_equal("'f' lines of catmull-clark level 1" "${faces}" 144)
+count_lines("${WORK}/cylinder_cc.obj" "f [0-9]+ [0-9]+ [0-9]+ [0-9]+$" quads)
+expect_equal("quads of catmull-clark level 1" "${quads}" 144)
+run(2 refine "${CYLINDER}" --level 1 --scheme loop -o "${WORK}/x.obj")
+expect_contains("${ERR}" "cylinder_capped.obj:36: face 1: has 4 corners; the loop scheme takes triangles only")
+run(2 info "${CYLINDER}" --smooth-triangles)
+expect_contains("${ERR}" "catmull-clark")
 
 set(RUN_PREFIX ${VULKAN_PREFIX})
 run(0 demo "${CYLINDER}" --levels 2 --out-dir "${WORK}/demo")

@@ -87,12 +87,13 @@ Sdc::Options::CreasingMethod sdcCreasing(CreaseMethod method) {
 }  // namespace
 
 OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
-                        CreaseMethod creaseMethod, int maxLevel) {
+                        CreaseMethod creaseMethod, int maxLevel, bool smoothTriangles) {
     if (maxLevel < 0) throw std::invalid_argument("osdRefine: negative level");
 
     Sdc::Options sdcOptions;
     sdcOptions.SetVtxBoundaryInterpolation(sdcBoundary(boundary));
     sdcOptions.SetCreasingMethod(sdcCreasing(creaseMethod));
+    sdcOptions.SetTriangleSubdivision(smoothTriangles ? Sdc::Options::TRI_SUB_SMOOTH : Sdc::Options::TRI_SUB_CATMARK);
 
     using Descriptor = Far::TopologyDescriptor;
     Descriptor desc;

@@ -50,11 +50,11 @@ struct OsdRefinement {
 
 // Refines `mesh` uniformly to `maxLevel` with OpenSubdiv (default refinement options) and
 // interpolates positions level by level. Creases, corners and holes of the mesh are passed through
-// the Far::TopologyDescriptor; `boundary` and `creaseMethod` set the Sdc options (the mesh's own
-// tags are NOT applied here: the caller resolves them). Throws std::runtime_error if OpenSubdiv
-// refuses the topology.
+// the Far::TopologyDescriptor; `boundary`, `creaseMethod` and `smoothTriangles` (TRI_SUB_SMOOTH,
+// else TRI_SUB_CATMARK) set the Sdc options (the mesh's own tags are NOT applied here: the caller
+// resolves them). Throws std::runtime_error if OpenSubdiv refuses the topology.
 OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
-                        CreaseMethod creaseMethod, int maxLevel);
+                        CreaseMethod creaseMethod, int maxLevel, bool smoothTriangles = false);
 
 // Result of matching each vertex of `ours` to a distinct vertex of `reference` by position.
 struct PositionMatch {

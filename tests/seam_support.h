@@ -8,6 +8,7 @@
 #include "far/internal/refine_topology.h"
 #include <quadtri/far/refiner.h>
 #include "far/internal/rules.h"
+#include "far/internal/scheme.h"
 #include "far/internal/stencil_table_double.h"
 
 namespace quadtri::test {
@@ -33,7 +34,8 @@ inline std::vector<double> applyTable(const StencilTableD& table, const std::vec
 // Level L (>= 1) of the refiner's topology as a double table built by the analyzer's builder.
 inline StencilTableD doubleLevelTable(const Refiner& refiner, int L) {
     const Topology& parent = refiner.level(L - 1);
-    return buildLevelStencils<StencilTableD>(parent, numberChildren(parent), refiner.options());
+    const ChildNumbering numbering = numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit());
+    return buildLevelStencils<StencilTableD>(parent, numbering, refiner.options());
 }
 
 // Graph distance of every vertex from a seed set, over the edges of `t`.

@@ -28,7 +28,9 @@ namespace {
 using namespace quadtri;
 using namespace quadtri::test;
 
-const Scheme kSchemes[] = {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly};
+// Loop takes no quads, which every shape here has.
+const Scheme kSchemes[] = {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly,
+                           Scheme::CatmullClark};
 
 struct Shape {
     std::string name;

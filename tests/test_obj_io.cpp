@@ -212,9 +212,9 @@ TEST(ObjIo, DescribeUsesTheFileNumbering) {
 }
 
 TEST(ObjIo, UnknownTagsAndStatementsWarn) {
-    ObjMesh m = parse(std::string(kQuad) + "t smoothtriangles 0/0/1 always\nf 1 2 3\nl 1 2\n", "w.obj");
+    ObjMesh m = parse(std::string(kQuad) + "t facevaryinginterpolateboundary 1/0/0 1\nf 1 2 3\nl 1 2\n", "w.obj");
     ASSERT_EQ(m.warnings.size(), 2u);
-    EXPECT_EQ(m.warnings[0], "w.obj:5: unknown tag 'smoothtriangles' ignored");
+    EXPECT_EQ(m.warnings[0], "w.obj:5: unknown tag 'facevaryinginterpolateboundary' ignored");
     EXPECT_EQ(m.warnings[1].rfind("w.obj:7: ", 0), 0u) << m.warnings[1];
     EXPECT_EQ(m.numFaces(), 1);
 }

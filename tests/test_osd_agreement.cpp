@@ -1,7 +1,9 @@
-// quadtri against OpenSubdiv on OpenSubdiv's own regression shapes (tests/meshes/osd):
-// pure-quad catmark_* shapes must refine exactly as OpenSubdiv's Catmark (under every smooth
-// scheme, catmark-butterfly included), loop_* shapes as its
-// Loop, bilinear_cube as its Bilinear. Vertices are matched by position (the two libraries order
+// quadtri against OpenSubdiv on OpenSubdiv's own regression shapes (tests/meshes/osd): every
+// shape under its own scheme, catmark_* under catmull-clark (also with the smooth-triangle rule,
+// against TRI_SUB_SMOOTH), loop_* under loop, bilinear_cube under bilinear; and the shapes without
+// triangles or collapsed edges under the mixed schemes too (pure-quad catmark_* under stam-loop,
+// schaefer-warren and catmark-butterfly, loop_* under stam-loop and schaefer-warren), which must
+// equal OpenSubdiv there. Vertices are matched by position (the two libraries order
 // refined vertices differently); on a mismatch the failure message lists, per kind of child
 // (face / edge / vertex point), which quadtri child differs from OpenSubdiv's child of the same
 // parent component, with the parent's tags on both sides.
@@ -17,8 +19,11 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "far/internal/refine_topology.h"
+#include "far/internal/scheme.h"
 #include "tests/osd_reference.h"
 #include "tests/test_support.h"
 
@@ -31,29 +36,23 @@ struct ShapeCase {
     std::string shape;  // file name without .obj, e.g. "catmark_cube"
     OsdScheme reference = OsdScheme::Catmark;
     Scheme ours = Scheme::StamLoop;
+    bool smoothTriangles = false;  // catmull-clark with Options::smoothTriangles, against TRI_SUB_SMOOTH
     int level = 1;
     int numFaces = 0;
 };
 
 std::ostream& operator<<(std::ostream& os, const ShapeCase& c) {
-    return os << c.shape << " level " << c.level << " (OSD " << toString(c.reference) << ", quadtri "
-              << toString(c.ours) << ")";
+    return os << c.shape << " level " << c.level << " (OSD " << toString(c.reference)
+              << (c.smoothTriangles ? " TRI_SUB_SMOOTH" : "") << ", quadtri " << toString(c.ours)
+              << (c.smoothTriangles ? " smooth triangles" : "") << ")";
 }
 
-// Shapes (or levels) that cannot be compared yet, with the reason; empty when comparable.
-// Keep this list explicit and short, and every entry justified.
-std::string skipReason(const ShapeCase& c) {
-    if (c.shape == "catmark_nonman_quadpole8")
-        return "its quads have a collapsed edge (f 4 3 5 5): quadtri reads them as triangles (a mixed mesh, "
-               "tested in test_mixed), OpenSubdiv keeps quads with a non-manifold self-loop edge: different surfaces";
-    return {};
-}
-
-// Face count and whether any face is a triangle, read straight from the `f` lines (no dependency
-// on the OBJ reader at test registration time).
+// Face count, triangles and faces with a collapsed edge (a corner repeating the one before it),
+// read straight from the `f` lines (no dependency on the OBJ reader at test registration time).
 struct FaceStats {
     int faces = 0;
     int triangles = 0;
+    int collapsed = 0;
 };
 
 FaceStats readFaceStats(const std::filesystem::path& path) {
@@ -63,11 +62,15 @@ FaceStats readFaceStats(const std::filesystem::path& path) {
     while (std::getline(in, line)) {
         if (line.size() < 2 || line[0] != 'f' || (line[1] != ' ' && line[1] != '\t')) continue;
         std::istringstream tokens(line.substr(1));
-        std::string token;
-        int corners = 0;
-        while (tokens >> token) ++corners;
+        std::vector<std::string> corners;
+        for (std::string token; tokens >> token;) corners.push_back(token.substr(0, token.find('/')));
         ++stats.faces;
-        if (corners == 3) ++stats.triangles;
+        if (corners.size() == 3) ++stats.triangles;
+        for (size_t i = 0; i < corners.size(); ++i)
+            if (corners[i] == corners[(i + 1) % corners.size()]) {
+                ++stats.collapsed;
+                break;
+            }
     }
     return stats;
 }
@@ -88,24 +91,33 @@ std::vector<ShapeCase> osdCases() {
         c.shape = shape;
         const FaceStats stats = readFaceStats(meshPath("osd/" + shape + ".obj"));
         c.numFaces = stats.faces;
-        // Pure shapes have no tri/quad seam, so both smooth schemes must equal OpenSubdiv's.
-        std::vector<Scheme> ours = {Scheme::StamLoop, Scheme::SchaeferWarren};
+        // The shape's own scheme, then the mixed schemes where they must agree with it: pure
+        // shapes have no tri/quad seam. A collapsed edge (`4 3 5 5`) makes a triangle for them.
+        std::vector<std::pair<Scheme, bool>> ours;  // scheme, smooth triangles
+        const bool pure = stats.collapsed == 0;
         if (startsWith(shape, "catmark_")) {
-            if (stats.triangles > 0) continue;  // Catmark and Stam-Loop differ on triangles by design
             c.reference = OsdScheme::Catmark;
-            ours.push_back(Scheme::CatmarkButterfly);  // Catmull-Clark wherever there is no triangle
+            ours = {{Scheme::CatmullClark, false}, {Scheme::CatmullClark, true}};
+            // Catmark and the mixed schemes differ on triangles by design; catmark-butterfly is
+            // Catmull-Clark wherever there is no triangle.
+            if (pure && stats.triangles == 0)
+                for (Scheme s : {Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly}) ours.push_back({s, false});
         } else if (startsWith(shape, "loop_")) {
             c.reference = OsdScheme::Loop;
-        } else if (shape == "bilinear_cube") {
+            ours = {{Scheme::Loop, false}};
+            if (pure)
+                for (Scheme s : {Scheme::StamLoop, Scheme::SchaeferWarren}) ours.push_back({s, false});
+        } else if (startsWith(shape, "bilinear_")) {
             c.reference = OsdScheme::Bilinear;
-            ours = {Scheme::Bilinear};
+            ours = {{Scheme::Bilinear, false}};
         } else {
             continue;
         }
         // Levels 1-4, and 1-3 for shapes over 500 faces (their level 4 is large and adds nothing).
         const int maxLevel = c.numFaces > 500 ? 3 : 4;
-        for (Scheme scheme : ours) {
+        for (const auto& [scheme, smoothTriangles] : ours) {
             c.ours = scheme;
+            c.smoothTriangles = smoothTriangles;
             for (int level = 1; level <= maxLevel; ++level) {
                 c.level = level;
                 cases.push_back(c);
@@ -116,7 +128,8 @@ std::vector<ShapeCase> osdCases() {
 }
 
 std::string caseName(const testing::TestParamInfo<ShapeCase>& info) {
-    return testNameOf(info.param.shape + "_L" + std::to_string(info.param.level) + "_" + toString(info.param.ours));
+    return testNameOf(info.param.shape + "_L" + std::to_string(info.param.level) + "_" + toString(info.param.ours) +
+                      (info.param.smoothTriangles ? "_smooth_triangles" : ""));
 }
 
 std::string formatPoint(const float* p) {
@@ -158,9 +171,8 @@ std::string diagnoseByParent(const RefinedMesh& ours, const OsdRefinement& osd, 
     const std::vector<float>& osdPos = osd.positions.at(L);
     const int numOurs = int(ourPos.size() / 3);
 
-    int numFacePoints = 0;
-    for (int f = 0; f < T.numFaces(); ++f)
-        if (T.faceSize(f) != 3) ++numFacePoints;
+    const ChildNumbering numbering = numberChildren(T, rulesOf(ours.options.scheme).triangleSplit());
+    const int numFacePoints = numbering.numFacePoints;
     std::ostringstream out;
     if (numFacePoints + T.numEdges() + T.numVertices != numOurs) {
         out << "  (per-parent diagnosis unavailable: level " << L << " has " << numOurs
@@ -194,7 +206,7 @@ std::string diagnoseByParent(const RefinedMesh& ours, const OsdRefinement& osd, 
         std::ostringstream what;
         if (i < numFacePoints) {
             kind = 0;
-            while (T.faceSize(faceIndex) == 3) ++faceIndex;
+            while (numbering.facePoint[faceIndex] < 0) ++faceIndex;
             parent = faceIndex++;
             std::vector<int> key;
             for (int k = T.faceOffsets[parent]; k < T.faceOffsets[parent + 1]; ++k) key.push_back(parentMap[T.faceVerts[k]]);
@@ -264,11 +276,9 @@ class OsdAgreement : public testing::TestWithParam<ShapeCase> {};
 
 TEST_P(OsdAgreement, PositionsMatch) {
     const ShapeCase& c = GetParam();
-    const std::string reason = skipReason(c);
-    if (!reason.empty()) GTEST_SKIP() << reason;
-
     Options base;
     base.scheme = c.ours;
+    base.smoothTriangles = c.smoothTriangles;
     RefinedMesh ours;
     try {
         ours = refineMesh("osd/" + c.shape + ".obj", c.level, base);
@@ -278,7 +288,8 @@ TEST_P(OsdAgreement, PositionsMatch) {
         try {
             const io::ObjMesh mesh = io::readObj(meshPath("osd/" + c.shape + ".obj"));
             const Options resolved = mesh.applyTags(base);
-            const OsdRefinement osd = osdRefine(mesh, c.reference, resolved.boundary, resolved.creaseMethod, c.level);
+            const OsdRefinement osd =
+                osdRefine(mesh, c.reference, resolved.boundary, resolved.creaseMethod, c.level, c.smoothTriangles);
             osdVerdict = "OpenSubdiv accepts this input (" + std::to_string(osd.numVertices[c.level]) +
                          " vertices at level " + std::to_string(c.level) + ")";
         } catch (const std::exception& osdError) {
@@ -288,7 +299,8 @@ TEST_P(OsdAgreement, PositionsMatch) {
     }
     OsdRefinement osd;
     try {
-        osd = osdRefine(ours.mesh, c.reference, ours.options.boundary, ours.options.creaseMethod, c.level);
+        osd = osdRefine(ours.mesh, c.reference, ours.options.boundary, ours.options.creaseMethod, c.level,
+                        ours.options.smoothTriangles);
     } catch (const std::exception& e) {
         FAIL() << "OpenSubdiv failed on " << c << ": " << e.what();
     }
@@ -315,8 +327,8 @@ TEST_P(OsdAgreement, PositionsMatch) {
 
     // Positions of the tested level, matched one-to-one by position.
     const PositionMatch m = matchPositions(ours.positions.at(c.level), osd.positions.at(c.level), diagonal, kTolerance);
-    std::printf("[ osd      ] %-28s L%d %-15s  verts %6d/%-6d  max rel dist %.3g%s\n", c.shape.c_str(), c.level,
-                toString(c.ours), m.numOurs, m.numReference, m.maxRelative(),
+    std::printf("[ osd      ] %-28s L%d %-15s%s  verts %6d/%-6d  max rel dist %.3g%s\n", c.shape.c_str(), c.level,
+                toString(c.ours), c.smoothTriangles ? " smooth-tri" : "", m.numOurs, m.numReference, m.maxRelative(),
                 m.maxRelative() <= kTolerance && countsOk ? "" : "  FAIL");
     if (m.maxRelative() <= kTolerance) return;
 
@@ -387,7 +399,10 @@ TEST_P(OsdAgreementBoundaryNone, OpenShapes) {
     } shapes[] = {{"catmark_edgecorner", OsdScheme::Catmark}, {"catmark_tent", OsdScheme::Catmark},
                   {"catmark_xord_boundary", OsdScheme::Catmark}, {"loop_saddle_edgeonly", OsdScheme::Loop},
                   {"loop_triangle_edgeonly", OsdScheme::Loop}};
+    // catmull-clark and loop are tried on their own shapes; the mixed schemes on all of them.
+    const bool ownShapesOnly = GetParam() == Scheme::CatmullClark || GetParam() == Scheme::Loop;
     for (const auto& s : shapes) {
+        if (ownShapesOnly && (s.reference == OsdScheme::Loop) != (GetParam() == Scheme::Loop)) continue;
         Options options;
         options.scheme = GetParam();
         options.boundary = BoundaryInterpolation::None;
@@ -410,7 +425,8 @@ TEST_P(OsdAgreementBoundaryNone, OpenShapes) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Schemes, OsdAgreementBoundaryNone, testing::Values(Scheme::StamLoop, Scheme::SchaeferWarren),
+INSTANTIATE_TEST_SUITE_P(Schemes, OsdAgreementBoundaryNone,
+                         testing::Values(Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmullClark, Scheme::Loop),
                          [](const testing::TestParamInfo<Scheme>& info) {
                              std::string name = toString(info.param);
                              std::replace(name.begin(), name.end(), '-', '_');
@@ -445,6 +461,58 @@ TEST(OsdReference, LoopTetrahedron) {
     EXPECT_TRUE(containsPoint(r.positions[1], 0.25f, 0.25f, 0.25f));
     // Edge point of 0-1: 3/8 (v0 + v1) + 1/8 (v2 + v3) = (0, 0, 1/2).
     EXPECT_TRUE(containsPoint(r.positions[1], 0.0f, 0.0f, 0.5f));
+}
+
+// Collapsed edges anywhere in a face, as catmull-clark reads them: catmark_nonman_quadpole8 with
+// its `f 4 3 5 5` quads rotated so that the collapsed edge wraps around (`5 4 3 5`) or sits first
+// (`5 5 4 3`), and one made a pentagon with two collapsed edges in a row (`4 3 5 5 5`), with a
+// crease and the left-handed flag; OpenSubdiv refines the same faces.
+TEST(OsdAgreementCollapsedEdges, RotatedAndRepeated) {
+    io::ObjMesh mesh = io::readObj(meshPath("osd/catmark_nonman_quadpole8.obj"));
+    std::vector<int> sizes, verts;
+    for (int f = 0, b = 0; f < mesh.numFaces(); b += mesh.faceSizes[f++]) {
+        std::vector<int> face(mesh.faceVerts.begin() + b, mesh.faceVerts.begin() + b + mesh.faceSizes[f]);
+        if (f == 1) face.push_back(face.back());                               // 4 3 5 5 5
+        if (f == 3) std::rotate(face.begin(), face.begin() + 3, face.end());  // 5 3 7 5
+        if (f == 5) std::rotate(face.begin(), face.begin() + 2, face.end());  // 5 5 7 9
+        sizes.push_back(int(face.size()));
+        verts.insert(verts.end(), face.begin(), face.end());
+    }
+    mesh.faceSizes = sizes;
+    mesh.faceVerts = verts;
+    mesh.creasePairs = {0, 1};
+    mesh.creaseSharpness = {2.5f};
+    for (bool leftHanded : {false, true}) {
+        Options options;
+        options.scheme = Scheme::CatmullClark;
+        options.leftHanded = leftHanded;
+        Refiner refiner(mesh.descriptor(), options);
+        refiner.refineUniform(3, TopologyDetail::Full);
+        const std::vector<std::vector<float>> ours = evaluateLevels(refiner, mesh.positions, 3);
+        const OsdRefinement osd = osdRefine(mesh, OsdScheme::Catmark, options.boundary, options.creaseMethod, 3);
+        const double diagonal = boundingBoxDiagonal(mesh.positions);
+        for (int L = 1; L <= 3; ++L) {
+            const PositionMatch m = matchPositions(ours[L], osd.positions[L], diagonal, kTolerance);
+            EXPECT_TRUE(m.countsEqual) << "level " << L << ": " << m.numOurs << " vs " << m.numReference;
+            EXPECT_LE(m.maxRelative(), kTolerance) << "level " << L << (leftHanded ? " left-handed" : "");
+            EXPECT_EQ(refiner.level(L).numFaces(), osd.numFaces[L]) << "level " << L;
+        }
+    }
+}
+
+// The smooth-triangle cases compare something: OpenSubdiv's two triangle rules differ at level 1
+// next to the pyramid's triangles, and agree where there is no triangle.
+TEST(OsdReference, SmoothTrianglesChangeTriangleEdgesOnly) {
+    const io::ObjMesh pyramid = io::readObj(meshPath("osd/catmark_pyramid.obj"));
+    const OsdRefinement plain =
+        osdRefine(pyramid, OsdScheme::Catmark, BoundaryInterpolation::EdgeOnly, CreaseMethod::Uniform, 1, false);
+    const OsdRefinement smooth =
+        osdRefine(pyramid, OsdScheme::Catmark, BoundaryInterpolation::EdgeOnly, CreaseMethod::Uniform, 1, true);
+    const double diagonal = boundingBoxDiagonal(pyramid.positions);
+    EXPECT_GT(matchPositions(smooth.positions[1], plain.positions[1], diagonal, kTolerance).maxRelative(), 1e-3);
+    const OsdRefinement cube = osdRefine(unitCube(), OsdScheme::Catmark, BoundaryInterpolation::EdgeOnly,
+                                         CreaseMethod::Uniform, 1, true);
+    EXPECT_TRUE(containsPoint(cube.positions[1], 2.0f / 9, 2.0f / 9, 2.0f / 9));
 }
 
 TEST(OsdReference, BilinearAndHoles) {

@@ -68,6 +68,23 @@ TEST(RefineTopology, ChildLevelsEqualTheGenericBuilder) {
     }
 }
 
+// Levels 1 and 2 under catmull-clark (its triangle split, its sharpness and flags). A collapsed
+// edge's two halves join the same two vertices, which the generic builder would merge into one
+// edge: that shape's halves are checked in test_catmull_clark instead.
+TEST(RefineTopology, CatmullClarkLevelsEqualTheGenericBuilder) {
+    Options catmullClark;
+    catmullClark.scheme = Scheme::CatmullClark;
+    for (const std::string& name : allMeshes()) {
+        if (name == "osd/catmark_nonman_quadpole8.obj") continue;
+        const io::ObjMesh mesh = io::readObj(meshPath(name));
+        const int levels = mesh.numFaces() > 500 ? 1 : 2;
+        Refiner refiner(mesh.descriptor(), mesh.applyTags(catmullClark));
+        refiner.refineUniform(levels, TopologyDetail::Full);
+        for (int f = 0; f < refiner.level(1).numFaces(); ++f) ASSERT_EQ(refiner.level(1).faceSize(f), 4) << name;
+        for (int L = 1; L <= levels; ++L) expectSameConnectivity(refiner.level(L), name + " level " + std::to_string(L));
+    }
+}
+
 // A scheme may split triangles into three quads around a face point (TriangleSplit::ThreeQuads,
 // as Catmull-Clark does): every face then has a face point and every child is a quad, and the
 // child level built by construction still equals the generic builder's.

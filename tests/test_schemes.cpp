@@ -30,10 +30,13 @@ TEST(Schemes, EveryEnumeratedSchemeIsRegistered) {
     const std::vector<Scheme>& all = allSchemes();
     ASSERT_FALSE(all.empty());
     EXPECT_EQ(all.front(), Options().scheme);
-    for (Scheme scheme : {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly})
+    for (Scheme scheme : {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly,
+                          Scheme::CatmullClark, Scheme::Loop})
         EXPECT_NE(std::find(all.begin(), all.end(), scheme), all.end()) << toString(scheme);
     EXPECT_EQ(std::string(toString(Scheme::StamLoop)), "stam-loop");
     EXPECT_EQ(std::string(toString(Scheme::CatmarkButterfly)), "catmark-butterfly");
+    EXPECT_EQ(std::string(toString(Scheme::CatmullClark)), "catmull-clark");
+    EXPECT_EQ(std::string(toString(Scheme::Loop)), "loop");
 }
 
 TEST(Schemes, AnUnregisteredValueIsATopologyError) {

@@ -11,6 +11,7 @@
 #include "bench/sphere.h"
 #include "bench/torus.h"
 #include "far/internal/rules.h"
+#include "far/internal/scheme.h"
 #include "far/internal/weight_pool.h"
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/tbb_evaluator.h>
@@ -240,7 +241,8 @@ TEST(WeightSharing, RegularTorusPoolsOneSequencePerMask) {
 // Level L of a refined mesh built as a double table by the analyzer's own builder.
 StencilTableD doubleLevelTable(const Refiner& refiner, int L) {
     const Topology& parent = refiner.level(L - 1);
-    return buildLevelStencils<StencilTableD>(parent, numberChildren(parent), refiner.options());
+    const ChildNumbering numbering = numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit());
+    return buildLevelStencils<StencilTableD>(parent, numbering, refiner.options());
 }
 
 TEST(WeightSharing, FloatTableRoundTripsThroughDouble) {

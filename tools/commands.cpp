@@ -57,10 +57,13 @@ void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, i
     throw io::ObjError(mesh.name + text);
 }
 
-// Defaults, then the file's tags, then explicit flags.
+// Defaults, then the file's tags, then explicit flags. The scheme comes first: whether the
+// file's smoothtriangles tag applies depends on it.
 Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
-    Options options = mesh.applyTags(Options());
-    if (args.scheme) options.scheme = *args.scheme;
+    Options base;
+    if (args.scheme) base.scheme = *args.scheme;
+    Options options = mesh.applyTags(base);
+    if (args.smoothTriangles) options.smoothTriangles = true;  // the Refiner refuses it where the scheme has no such rule
     if (args.boundary) options.boundary = *args.boundary;
     if (args.creaseMethod) options.creaseMethod = *args.creaseMethod;
     if (args.memoryBudget) options.memoryBudgetBytes = *args.memoryBudget;

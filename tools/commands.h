@@ -21,6 +21,7 @@ struct MeshArgs {
     std::optional<BoundaryInterpolation> boundary;  // default: the file's tag, else edge only
     std::optional<CreaseMethod> creaseMethod;       // default: the file's tag, else uniform
     std::optional<std::size_t> memoryBudget;        // default: Options::memoryBudgetBytes
+    bool smoothTriangles = false;                   // --smooth-triangles (catmull-clark only); else the file's tag
 };
 
 // Largest refinement level accepted on the command line (the memory budget may refuse less).

@@ -61,6 +61,9 @@ void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
            "--crease-method", [&args](const std::string& s) { args.creaseMethod = creaseMethods.at(s); },
            "Sharpness decay per level; overrides the file's creasemethod tag (default uniform)")
         ->check(oneOf(creaseMethods, "crease method"));
+    cmd.add_flag("--smooth-triangles", args.smoothTriangles,
+                 "OpenSubdiv's smooth-triangle rule (TRI_SUB_SMOOTH) for triangles; catmull-clark only "
+                 "(default: the file's smoothtriangles tag)");
     cmd.add_option_function<std::string>(
            "--memory-budget", [&args](const std::string& s) { args.memoryBudget = cli::parseByteSize(s); },
            "Refuse a level whose estimated tables and output exceed SIZE (e.g. 512MiB, 8GiB; default 4GiB)")

@@ -232,7 +232,7 @@ private:
         if (tok.size() < 2) fail("tag without a name");
         std::string name(tok[1]);
         if (name != "crease" && name != "corner" && name != "hole" && name != "interpolateboundary" &&
-            name != "creasemethod") {
+            name != "creasemethod" && name != "smoothtriangles") {
             noteUnknown("tag " + quote(name));
             return;
         }
@@ -299,6 +299,11 @@ private:
                     fail("interpolateboundary value " + std::to_string(ints[0]) +
                          " is not 0 (none), 1 (edge and corner) or 2 (edge only)");
             }
+        } else if (name == "smoothtriangles") {  // OpenSubdiv's spelling: smooth or catmark (the default rule)
+            expect(nInt == 0 && nFloat == 0 && nString == 1, "0/0/1");
+            if (strings[0] != "smooth" && strings[0] != "catmark")
+                fail("smoothtriangles '" + std::string(strings[0]) + "' is not smooth or catmark");
+            mesh_.smoothTriangles = strings[0] == "smooth";
         } else {  // creasemethod
             expect(nInt == 0 && nFloat == 0 && nString == 1, "0/0/1");
             if (strings[0] == "chaikin")
@@ -333,6 +338,7 @@ TopologyDescriptor ObjMesh::descriptor() const {
 Options ObjMesh::applyTags(Options base) const {
     if (boundary) base.boundary = *boundary;
     if (creaseMethod) base.creaseMethod = *creaseMethod;
+    if (smoothTriangles && takesSmoothTriangles(base.scheme)) base.smoothTriangles = *smoothTriangles;
     return base;
 }
 

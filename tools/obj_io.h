@@ -1,5 +1,5 @@
 // Wavefront OBJ with OpenSubdiv's tags (`t crease`, `t corner`, `t hole`, `t interpolateboundary`,
-// `t creasemethod`), as described in tests/meshes/README.md.
+// `t creasemethod`, `t smoothtriangles`), as described in tests/meshes/README.md.
 #pragma once
 
 #include <functional>
@@ -32,6 +32,7 @@ struct ObjMesh {
     std::vector<int> holes;
     std::optional<BoundaryInterpolation> boundary;  // from `t interpolateboundary`
     std::optional<CreaseMethod> creaseMethod;       // from `t creasemethod`
+    std::optional<bool> smoothTriangles;            // from `t smoothtriangles 0/0/1 smooth` (or `catmark`: false)
     std::vector<std::string> warnings;              // "file:line: ..." for ignored content
 
     // Where each item came from, so that topology errors can name the line.
@@ -42,7 +43,9 @@ struct ObjMesh {
     int numFaces() const { return int(faceSizes.size()); }
     // A view of the arrays above; valid while this mesh lives.
     TopologyDescriptor descriptor() const;
-    // `base` with the boundary and crease method replaced where the file has tags for them.
+    // `base` with the boundary and crease method replaced where the file has tags for them, and
+    // the smooth-triangle rule where the file asks for it and base.scheme has it (catmull-clark;
+    // OpenSubdiv's own shape reader likewise applies the tag to Catmark shapes only).
     Options applyTags(Options base) const;
     // The whole message in the file's numbering, "file:line: " first: a face is the K-th `f`
     // statement with 1-based vertices ("face 2: vertex 4 appears more than once"); a tag keeps

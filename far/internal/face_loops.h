@@ -7,6 +7,8 @@
 //   - a loop with fewer than 3 corners (`1 1 2 2`, or the pieces of `1 2 1 3`) has no area and is
 //     left out.
 // The loops keep the face's orientation, so neighbours still agree on their shared edges.
+// Schemes that must equal OpenSubdiv read a face whose only repeats are collapsed edges as
+// OpenSubdiv does: kept as it is, each collapsed edge an edge of its own (CollapsedEdges::Keep).
 #pragma once
 
 #include <cstddef>
@@ -22,10 +24,17 @@ struct FaceLoops {
     int repeated = -1;      // the first vertex met again further on, or -1
 };
 
+// What becomes of a face whose only repeated corners are collapsed edges (`4 3 5 5`).
+enum class CollapsedEdges {
+    Drop,  // the corners are merged: `4 3 5 5` is the triangle `4 3 5`
+    Keep,  // the face stays as it is, with an edge from 5 to 5 (docs/schemes/catmull_clark.md)
+};
+
 // Splits faces into simple loops; `numVertices` bounds the indices (validated beforehand).
 class FaceLoopSplitter {
 public:
-    explicit FaceLoopSplitter(int numVertices) : position_(std::size_t(numVertices), -1) {}
+    explicit FaceLoopSplitter(int numVertices, CollapsedEdges collapsed = CollapsedEdges::Drop)
+        : position_(std::size_t(numVertices), -1), collapsed_(collapsed) {}
 
     // Appends the loops of face `verts[0 .. n)` to `faceVerts`, one size per loop to `faceSizes`.
     // Linear in n.
@@ -34,6 +43,7 @@ public:
 private:
     std::vector<int> position_;  // per vertex: its index on the walk, or -1 (reset after each face)
     std::vector<int> walk_;
+    CollapsedEdges collapsed_;
 };
 
 }  // namespace v0

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "far/internal/crease.h"
+#include "far/internal/face_loops.h"
 #include <quadtri/far/options.h>
 #include "far/internal/refine_topology.h"
 #include "far/internal/sparse_accumulator.h"
@@ -80,6 +81,12 @@ public:
     virtual TriangleSplit triangleSplit() const { return TriangleSplit::FourTriangles; }
     // False: a face of level 0 with other than 3 corners is a TopologyError naming the face.
     virtual bool acceptsNonTriangles() const { return true; }
+    // What a face whose only repeated corners are collapsed edges (`4 3 5 5`) becomes at level 0
+    // (face_loops.h): merged corners, or kept as it is, as OpenSubdiv reads it.
+    virtual CollapsedEdges collapsedEdges() const { return CollapsedEdges::Drop; }
+    // Whether Options::smoothTriangles means anything to the scheme; where not, asking for it is a
+    // TopologyError.
+    virtual bool acceptsSmoothTriangles() const { return false; }
     // False: sharpness never changes a mask (every level is built as smooth; Bilinear).
     virtual bool usesSharpness() const { return true; }
     // Whether the float-table short cut of regular_masks.h applies on smooth levels: the scheme's

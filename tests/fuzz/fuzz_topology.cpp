@@ -73,7 +73,10 @@ std::vector<float> decodePositions(ByteReader& in, int numVertices) {
 
 void decode(ByteReader& in, FuzzedMesh& m) {
     unsigned choice = in.next();
-    m.options.scheme = Scheme(choice % 4);
+    // The top quarter of the byte picks the schemes added after the corpus was made, so that the
+    // checked-in inputs below it keep their scheme.
+    m.options.scheme = choice < 192 ? Scheme(choice % 4) : choice % 2 ? Scheme::CatmullClark : Scheme::Loop;
+    m.options.smoothTriangles = m.options.scheme == Scheme::CatmullClark && choice / 2 % 2;
     m.options.boundary = BoundaryInterpolation(choice / 4 % 3);
     m.options.creaseMethod = CreaseMethod(choice / 12 % 2);
     m.options.leftHanded = choice / 24 % 2;
