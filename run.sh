@@ -68,7 +68,7 @@ fuzz)
     [ ${#targets[@]} -eq 0 ] && targets=(obj topology)
     cmake -S . -B "$FUZZ_BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
           -DQUADTRI_FUZZ=ON ${CMAKE_ARGS:-}
-    cmake --build "$FUZZ_BUILD_DIR" -j "$JOBS" --target "${targets[@]/#/fuzz_}"
+    cmake --build "$FUZZ_BUILD_DIR" -j "$JOBS" --target "${targets[@]/#/quadtri_fuzz_}"
     status=0
     for target in "${targets[@]}"; do
         # libFuzzer adds what it finds to its corpus directory: work on a copy, keep the checked-in one.
