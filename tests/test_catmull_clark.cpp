@@ -56,25 +56,6 @@ RefinedRing refineRing(const std::string& kinds, bool smoothTriangles) {
     return r;
 }
 
-// Float tables of smooth levels take the regular masks' short cut (far/regular_masks.h): the
-// table must be exactly the one the rules build (the double table, rounded and interned).
-void expectShortCutEqualsTheRules(const char* name, const Options& base) {
-    const io::ObjMesh mesh = io::readObj(meshPath(name));
-    Refiner refiner(mesh.descriptor(), mesh.applyTags(base));
-    refiner.refineUniform(3, TopologyDetail::Full);
-    for (int L = 1; L <= 3; ++L) {
-        const std::string where = std::string(name) + " level " + std::to_string(L);
-        const Topology& parent = refiner.level(L - 1);
-        const ChildNumbering numbering = numberChildren(parent, rulesOf(base.scheme).triangleSplit());
-        const StencilTable rules = toFloatTable(buildLevelStencils<StencilTableD>(parent, numbering, refiner.options()));
-        const StencilTable& built = refiner.levelStencils(L);
-        EXPECT_EQ(built.offsets, rules.offsets) << where;
-        EXPECT_EQ(built.indices, rules.indices) << where;
-        EXPECT_EQ(built.weightOffsets, rules.weightOffsets) << where;
-        EXPECT_EQ(built.weights, rules.weights) << where;
-    }
-}
-
 // Adds x times the centroid of `face` to d.
 void addCentroid(Dense& d, const std::vector<int>& face, double x) {
     for (int v : face) d.add(v, x / double(face.size()));

@@ -302,23 +302,10 @@ TEST(LevelStencils, PartsJoinToTheSerialTable) {
 TEST(LevelStencils, RegularShortCutEqualsTheRules) {
     for (const char* name : {"osd/loop_icosahedron.obj", "osd/catmark_cube.obj", "osd/catmark_torus.obj", "osd/loop_cube.obj",
                              "mixed/mixed_torus.obj"}) {
-        const io::ObjMesh mesh = io::readObj(meshPath(name));
         for (Scheme scheme : {Scheme::StamLoop, Scheme::SchaeferWarren}) {
             Options options;
             options.scheme = scheme;
-            Refiner refiner(mesh.descriptor(), mesh.applyTags(options));
-            refiner.refineUniform(3, TopologyDetail::Full);
-            for (int L = 1; L <= 3; ++L) {
-                const std::string where = std::string(name) + " " + toString(scheme) + " level " + std::to_string(L);
-                const Topology& parent = refiner.level(L - 1);
-                const StencilTable rules =
-                    toFloatTable(buildLevelStencils<StencilTableD>(parent, numberChildren(parent), refiner.options()));
-                const StencilTable& built = refiner.levelStencils(L);
-                EXPECT_EQ(built.offsets, rules.offsets) << where;
-                EXPECT_EQ(built.indices, rules.indices) << where;
-                EXPECT_EQ(built.weightOffsets, rules.weightOffsets) << where;
-                EXPECT_EQ(built.weights, rules.weights) << where;
-            }
+            expectShortCutEqualsTheRules(name, options);
         }
     }
 }

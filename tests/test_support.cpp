@@ -6,7 +6,13 @@
 #include <cmath>
 #include <limits>
 
+#include <gtest/gtest.h>
+
 #include <quadtri/osd/cpu_evaluator.h>
+#include "far/internal/refine_topology.h"
+#include "far/internal/rules.h"
+#include "far/internal/scheme.h"
+#include "far/internal/stencil_table_double.h"
 
 namespace quadtri::test {
 
@@ -89,6 +95,23 @@ TopologyDescriptor descriptorOf(int numVertices, const std::vector<int>& sizes, 
     d.numVertsPerFace = sizes.data();
     d.faceVertIndices = verts.data();
     return d;
+}
+
+void expectShortCutEqualsTheRules(const std::string& mesh, const Options& options) {
+    const io::ObjMesh m = io::readObj(meshPath(mesh));
+    Refiner refiner(m.descriptor(), m.applyTags(options));
+    refiner.refineUniform(3, TopologyDetail::Full);
+    for (int L = 1; L <= 3; ++L) {
+        const std::string where = mesh + " " + toString(options.scheme) + " level " + std::to_string(L);
+        const Topology& parent = refiner.level(L - 1);
+        const ChildNumbering numbering = numberChildren(parent, rulesOf(options.scheme).triangleSplit());
+        const StencilTable rules = toFloatTable(buildLevelStencils<StencilTableD>(parent, numbering, refiner.options()));
+        const StencilTable& built = refiner.levelStencils(L);
+        EXPECT_EQ(built.offsets, rules.offsets) << where;
+        EXPECT_EQ(built.indices, rules.indices) << where;
+        EXPECT_EQ(built.weightOffsets, rules.weightOffsets) << where;
+        EXPECT_EQ(built.weights, rules.weights) << where;
+    }
 }
 
 }  // namespace quadtri::test
