@@ -1,0 +1,369 @@
+// Limit positions and tangents from the eigen-structure of local subdivision matrices
+// (far/internal/eigen_limit.h). Closed forms where they exist (Catmull-Clark's and Loop's
+// position masks and subdominant eigenvalues), and on mixed configurations the behaviour of the
+// refinement itself: a vertex's ring closes in on the computed limit by the computed subdominant
+// eigenvalue per level, and the normal of the mesh refined six levels further is the computed one.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "far/internal/crease.h"
+#include "far/internal/eigen_analysis.h"
+#include "far/internal/eigen_limit.h"
+#include <quadtri/far/refiner.h>
+#include "tests/local_meshes.h"
+#include "tests/test_support.h"
+
+namespace {
+
+using namespace quadtri;
+using namespace quadtri::test;
+
+const double kPi = std::acos(-1.0);
+using Vec3 = std::array<double, 3>;
+
+Options withScheme(Scheme s) {
+    Options o;
+    o.scheme = s;
+    return o;
+}
+
+Vec3 sub(Vec3 a, Vec3 b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 cross(Vec3 a, Vec3 b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+double dot(Vec3 a, Vec3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
+double angleDegrees(Vec3 a, Vec3 b) {
+    return std::atan2(norm(cross(a, b)), dot(a, b)) * 180 / kPi;
+}
+
+Vec3 apply(const std::vector<int>& vertices, const std::vector<double>& w, const std::vector<double>& pos) {
+    Vec3 p{0, 0, 0};
+    for (size_t k = 0; k < vertices.size(); ++k)
+        for (int c = 0; c < 3; ++c) p[c] += w[k] * pos[3 * size_t(vertices[k]) + c];
+    return p;
+}
+
+double sum(const std::vector<double>& w) {
+    double s = 0;
+    for (double x : w) s += x;
+    return s;
+}
+
+// Positions of level `to` from level `from`'s, through the per-level tables, in double.
+std::vector<double> refinePositions(const Refiner& r, std::vector<double> pos, int from, int to) {
+    for (int L = from + 1; L <= to; ++L) {
+        const StencilTable& t = r.levelStencils(L);
+        std::vector<double> next(3 * size_t(t.numStencils()), 0.0);
+        for (int i = 0; i < t.numStencils(); ++i)
+            for (int k = 0; k < t.size(i); ++k)
+                for (int c = 0; c < 3; ++c)
+                    next[3 * size_t(i) + c] += double(t.weightsOf(i)[k]) * pos[3 * size_t(t.indices[t.offsets[i] + k]) + c];
+        pos = std::move(next);
+    }
+    return pos;
+}
+
+// ---- Closed forms ---------------------------------------------------------------------------
+
+double loopBeta(int n) {
+    const double c = 3.0 / 8 + 0.25 * std::cos(2 * kPi / n);
+    return (5.0 / 8 - c * c) / n;
+}
+
+TEST(EigenLimit, CatmullClarkPositionMaskAndEigenvalue) {
+    for (Scheme s : {Scheme::CatmullClark, Scheme::StamLoop, Scheme::SchaeferWarren}) {
+        for (int n = 3; n <= 8; ++n) {
+            SCOPED_TRACE(std::string(toString(s)) + " valence " + std::to_string(n));
+            const RingMesh r = buildRingMesh(std::string(size_t(n), 'Q'));
+            Refiner refiner(r.mesh.descriptor(), withScheme(s));
+            const auto masks = eigenLimitMasks(refiner.level(0), r.center, withScheme(s));
+            ASSERT_TRUE(masks);  // not `settled` (the cone is 2 rings out), exact all the same: the
+                                 // 1-ring's masks read only the centre's faces
+            EXPECT_EQ(masks->analysis->tangents, TangentSource::Eigen);
+            std::vector<double> expected(size_t(r.mesh.numVertices), 0.0);
+            expected[r.center] = double(n) * n / (n * (n + 5.0));
+            for (int i = 0; i < n; ++i) {
+                expected[r.p[i]] = 4.0 / (n * (n + 5.0));
+                expected[r.q[i]] = 1.0 / (n * (n + 5.0));
+            }
+            std::vector<double> got(expected.size(), 0.0);
+            for (size_t k = 0; k < masks->vertices.size(); ++k) got[masks->vertices[k]] += masks->position[k];
+            EXPECT_LE(maxAbsDifference(got, expected), 1e-12);
+            EXPECT_NEAR(sum(masks->position), 1.0, 1e-12);
+            EXPECT_NEAR(sum(masks->tangent1), 0.0, 1e-12);
+            EXPECT_NEAR(sum(masks->tangent2), 0.0, 1e-12);
+            const double c2 = std::cos(2 * kPi / n);
+            const double lambda = (5 + c2 + std::cos(kPi / n) * std::sqrt(2 * (9 + c2))) / 16;
+            // A double eigenvalue: the block's two Ritz values split by about the square root of
+            // the residual (docs/limit_eigen.md, "Numerics").
+            EXPECT_NEAR(masks->analysis->lambda1, lambda, 1e-7);
+            EXPECT_NEAR(masks->analysis->lambda2, lambda, 1e-7);
+            if (n == 4) {
+                EXPECT_NEAR(masks->analysis->lambda1, 0.5, 1e-7);
+            }
+        }
+    }
+}
+
+TEST(EigenLimit, LoopPositionMaskAndEigenvalue) {
+    for (Scheme s : {Scheme::Loop, Scheme::StamLoop, Scheme::SchaeferWarren}) {
+        for (int n = 3; n <= 12; ++n) {
+            SCOPED_TRACE(std::string(toString(s)) + " valence " + std::to_string(n));
+            const RingMesh r = buildRingMesh(std::string(size_t(n), 'T'));
+            Refiner refiner(r.mesh.descriptor(), withScheme(s));
+            const auto masks = eigenLimitMasks(refiner.level(0), r.center, withScheme(s));
+            ASSERT_TRUE(masks);
+            const double w = 1.0 / (n + 3.0 / (8.0 * loopBeta(n)));
+            std::vector<double> expected(size_t(r.mesh.numVertices), 0.0);
+            expected[r.center] = 1.0 - n * w;
+            for (int i = 0; i < n; ++i) expected[r.p[i]] = w;
+            std::vector<double> got(expected.size(), 0.0);
+            for (size_t k = 0; k < masks->vertices.size(); ++k) got[masks->vertices[k]] += masks->position[k];
+            EXPECT_LE(maxAbsDifference(got, expected), 1e-12);
+            EXPECT_NEAR(sum(masks->tangent1), 0.0, 1e-12);
+            EXPECT_NEAR(sum(masks->tangent2), 0.0, 1e-12);
+            const double lambda = 3.0 / 8 + 0.25 * std::cos(2 * kPi / n);
+            EXPECT_NEAR(masks->analysis->lambda1, lambda, 1e-7);
+            EXPECT_NEAR(masks->analysis->lambda2, lambda, 1e-7);
+        }
+    }
+}
+
+// The numerics on a matrix whose eigen-structure is known by construction: S = V D V⁻¹ with a
+// stochastic structure is hard to make, so use Catmull-Clark's and check l0 S = l0 directly.
+TEST(EigenAnalysis, FixedLeftVectorIsFixed) {
+    const RingMesh r = buildRingMesh("QQTTT");
+    const Options o = withScheme(Scheme::SchaeferWarren);
+    Refiner refiner(r.mesh.descriptor(), o);
+    const auto fan = fanOf(refiner.level(0), r.center, o);
+    const auto m = buildLocalMatrix(fan->configuration, o);
+    ASSERT_TRUE(m);
+    const auto l0 = fixedLeftVector(m->S, m->size);
+    ASSERT_TRUE(l0);
+    for (int j = 0; j < m->size; ++j) {
+        double lj = 0;
+        for (int i = 0; i < m->size; ++i) lj += (*l0)[i] * m->S[size_t(i) * m->size + j];
+        EXPECT_NEAR(lj, (*l0)[j], 1e-13);
+    }
+    const SubdominantSpace space = subdominantLeftSpace(m->S, m->size, *l0);
+    EXPECT_TRUE(space.converged);
+    EXPECT_NEAR(space.lambda1, 0.5, 1e-7);  // the ordinary seam: 1, 1/2, 1/2, 1/4 ...
+    EXPECT_NEAR(space.lambda2, 0.5, 1e-7);
+    EXPECT_NEAR(space.lambda3, 0.25, 1e-6);
+}
+
+// ---- Convergence on refined meshes -----------------------------------------------------------
+
+// The faces within `rings` face rings of v as a mesh of their own (sharpness kept), with the
+// positions of its vertices; local index of v.
+struct Patch {
+    LocalMesh mesh;
+    std::vector<double> pos;
+    int v = 0;
+};
+
+Patch extract(const Topology& t, const std::vector<double>& pos, int v, int rings) {
+    std::vector<int> verts{v}, faces;
+    size_t reached = 0;
+    auto has = [](const std::vector<int>& l, int x) { return std::find(l.begin(), l.end(), x) != l.end(); };
+    for (int ring = 0; ring < rings; ++ring) {
+        const size_t end = verts.size();
+        for (; reached < end; ++reached)
+            for (int f : t.facesOfVertex(verts[reached]))
+                if (!has(faces, f)) faces.push_back(f);
+        for (int f : faces)
+            for (int u : t.verticesOfFace(f))
+                if (!has(verts, u)) verts.push_back(u);
+    }
+    std::map<int, int> local;
+    Patch p;
+    for (size_t i = 0; i < verts.size(); ++i) {
+        local[verts[i]] = int(i);
+        for (int c = 0; c < 3; ++c) p.pos.push_back(pos[3 * size_t(verts[i]) + c]);
+    }
+    p.mesh.numVertices = int(verts.size());
+    std::vector<int> edges;
+    for (int f : faces) {
+        std::vector<int> corners;
+        for (int u : t.verticesOfFace(f)) corners.push_back(local[u]);
+        p.mesh.addFace(corners);
+        for (int e : t.edgesOfFace(f))
+            if (isSharp(t.edgeSharpness[e]) && !has(edges, e)) edges.push_back(e);
+    }
+    for (int e : edges) {
+        p.mesh.creasePairs.push_back(local[t.edgeVerts[2 * e]]);
+        p.mesh.creasePairs.push_back(local[t.edgeVerts[2 * e + 1]]);
+        p.mesh.creaseWeights.push_back(t.edgeSharpness[e]);
+    }
+    for (size_t i = 0; i < verts.size(); ++i)
+        if (isSharp(t.vertSharpness[verts[i]])) {
+            p.mesh.corners.push_back(int(i));
+            p.mesh.cornerWeights.push_back(t.vertSharpness[verts[i]]);
+        }
+    p.v = 0;
+    return p;
+}
+
+struct Convergence {
+    int levels = 0;            // refined this many levels further
+    double ratio = 0;          // ring distance to the limit, last level over the one before
+    double normalDegrees = 0;  // the computed normal against the refined mesh's at the last level
+};
+
+Vec3 vertexPosition(const std::vector<double>& pos, int v) { return {pos[3 * size_t(v)], pos[3 * size_t(v) + 1], pos[3 * size_t(v) + 2]}; }
+
+// Levels to refine: six, or more where the next eigenvalue is close to the pair, until its share
+// of the refined ring, (λ3/λ2)^k, is under 1 % (it tilts the refined mesh's normal by about that).
+int levelsFor(const ConfigurationLimit& a) {
+    const double q = a.lambda3 / a.lambda2;
+    if (!(q > 0 && q < 1)) return 6;
+    return std::max(6, std::min(16, int(std::ceil(std::log(0.01) / std::log(q)))));
+}
+
+// Refines the neighbourhood of v, one level at a time on a patch cut around the descendant (wide
+// enough that its boundary never reaches the rings measured), moved so that the computed limit is
+// at the origin (float weights then add no error of the size of the mesh).
+Convergence converge(const Topology& t, const std::vector<double>& pos, int v, Options o, const VertexLimitMasks& m) {
+    const Vec3 limit = apply(m.vertices, m.position, pos);
+    const Vec3 normal = cross(apply(m.vertices, m.tangent1, pos), apply(m.vertices, m.tangent2, pos));
+    if (o.boundary == BoundaryInterpolation::None) o.boundary = BoundaryInterpolation::EdgeOnly;
+    const int rings = m.analysis->rings + 3;
+    auto ringDistance = [&](const Topology& level, const std::vector<double>& p, int u) {
+        double d = 0;
+        for (int e : level.edgesOfVertex(u)) d = std::max(d, norm(vertexPosition(p, level.otherVertex(e, u))));
+        return d;
+    };
+    std::vector<double> moved = pos;
+    for (size_t i = 0; i < moved.size(); ++i) moved[i] -= limit[i % 3];
+    std::vector<double> distances{ringDistance(t, moved, v)};
+    Patch patch = extract(t, moved, v, rings);
+    Convergence out;
+    out.levels = levelsFor(*m.analysis);
+    for (int level = 1; level <= out.levels; ++level) {
+        Refiner r(patch.mesh.descriptor(), o);
+        r.refineUniform(1, TopologyDetail::Full);
+        const std::vector<double> next = refinePositions(r, patch.pos, 0, 1);
+        const Topology& child = r.level(1);
+        const int u = childOfVertex(r.level(0), patch.v);
+        distances.push_back(ringDistance(child, next, u));
+        if (level == out.levels) {
+            Vec3 n{0, 0, 0};
+            for (int f : child.facesOfVertex(u)) {
+                const IndexSpan c = child.verticesOfFace(f);
+                const int i = child.cornerOfVertex(f, u), k = c.size();
+                const Vec3 a = vertexPosition(next, u);
+                const Vec3 fn = cross(sub(vertexPosition(next, c[(i + 1) % k]), a), sub(vertexPosition(next, c[(i + k - 1) % k]), a));
+                for (int x = 0; x < 3; ++x) n[x] += fn[x];
+            }
+            out.normalDegrees = angleDegrees(n, normal);
+        } else {
+            patch = extract(child, next, u, rings);
+        }
+    }
+    out.ratio = distances[size_t(out.levels)] / distances[size_t(out.levels) - 1];
+    return out;
+}
+
+bool isMixed(const VertexConfiguration& c) {
+    return std::count(c.faceSizes.begin(), c.faceSizes.end(), 3) > 0 && std::count(c.faceSizes.begin(), c.faceSizes.end(), 4) > 0;
+}
+
+// Every configuration met at level `L0` of a mesh (the first vertex of each), checked.
+void checkMesh(const LocalMesh* ring, const std::string& file, Scheme scheme, int L0, bool mixedOnly) {
+    io::ObjMesh obj;
+    Options o = withScheme(scheme);
+    std::vector<double> control;
+    TopologyDescriptor desc;
+    if (ring) {
+        desc = ring->descriptor();
+    } else {
+        obj = io::readObj(meshPath(file));
+        o = obj.applyTags(o);
+        desc = obj.descriptor();
+        control.assign(obj.positions.begin(), obj.positions.end());
+    }
+    Refiner refiner(desc, o);
+    refiner.refineUniform(L0, TopologyDetail::Full);
+    if (ring) {
+        for (int v = 0; v < ring->numVertices; ++v) {  // a generic surface over the ring mesh
+            const double a = 2.1 * v + 0.3, rad = v == 0 ? 0.0 : 1.0 + 0.15 * std::sin(3.0 * v);
+            const double x = rad * std::cos(a), y = rad * std::sin(a);
+            control.insert(control.end(), {x, y, 0.3 * x * x - 0.2 * x * y + 0.1 * y * y * y});
+        }
+        const double apex[3] = {0.1, -0.05, -1.5};  // closes the ring below
+        for (int c = 0; c < 3; ++c) control[3 * size_t(ring->numVertices - 1) + c] = apex[c];
+    }
+    const std::vector<double> pos = refinePositions(refiner, control, 0, L0);
+    const Topology& t = refiner.level(L0);
+    std::map<std::string, int> seen;
+    int unsettled = 0, checked = 0, unsupported = 0;
+    for (int v = 0; v < t.numVertices; ++v) {
+        const auto fan = fanOf(t, v, o);
+        if (!fan || (mixedOnly && !isMixed(fan->configuration))) continue;
+        const std::string key = fan->configuration.key();
+        if (seen.count(key)) continue;
+        const auto masks = eigenLimitMasks(t, v, o);
+        if (!masks) {  // a neighbourhood that folds onto itself (the mesh is small there)
+            ++unsupported;
+            continue;
+        }
+        if (!masks->settled) {
+            ++unsettled;
+            continue;
+        }
+        seen[key] = v;
+        ++checked;
+        const ConfigurationLimit& a = *masks->analysis;
+        SCOPED_TRACE(file + " " + toString(scheme) + " vertex " + std::to_string(v) + " " + key);
+        EXPECT_NEAR(sum(masks->position), 1.0, 1e-12);
+        EXPECT_NEAR(sum(masks->tangent1), 0.0, 1e-12);
+        EXPECT_NEAR(sum(masks->tangent2), 0.0, 1e-12);
+        const Convergence c = converge(t, pos, v, o, *masks);
+        std::printf("  %-18s %-17s %-24s N %d x %3zu  lambda %.5f %.5f (im %.0e) next %.5f  %s  +%2d levels: ratio %.5f  normal %.4f deg  %.2f ms\n",
+                    ring ? "(ring mesh)" : file.c_str(), toString(scheme), key.c_str(), a.rings, a.position.size(),
+                    a.lambda1, a.lambda2, a.imaginary, a.lambda3, a.tangents == TangentSource::Eigen ? "eigen   " : "estimate",
+                    c.levels, c.ratio, c.normalDegrees, 1e3 * a.seconds);
+        EXPECT_NEAR(c.ratio, a.lambda1, 0.1 * a.lambda1);
+        EXPECT_LT(c.normalDegrees, 0.5);
+    }
+    if (!ring)
+        std::printf("  %s %s: %d configurations checked; first met unsettled at level %d: %d, folded: %d\n", file.c_str(),
+                    toString(scheme), checked, L0, unsettled, unsupported);
+}
+
+// Stam-Loop at valence 3-6 with 1 .. n-1 triangles, triangles together and (valence 4-6) split.
+TEST(EigenLimitConvergence, StamLoopMixedValences) {
+    for (const std::string ring : {"QT", "QTT", "QQT", "QTTT", "QQTT", "QQQT", "QTQT", "QTTTT", "QQTTT", "QQQTT", "QQQQT",
+                                   "QTQTT", "QTTTTT", "QQTTTT", "QQQTTT", "QQQQTT", "QQQQQT", "QTQTQT", "QQTQTT"}) {
+        SCOPED_TRACE(ring);
+        const RingMesh r = buildRingMesh(ring);
+        checkMesh(&r.mesh, ring, Scheme::StamLoop, 2, true);
+    }
+}
+
+class EigenLimitMixedMeshes : public ::testing::TestWithParam<std::tuple<std::string, Scheme>> {};
+
+TEST_P(EigenLimitMixedMeshes, ConvergesAtTheSubdominantRateToTheComputedNormal) {
+    const auto [file, scheme] = GetParam();
+    checkMesh(nullptr, file, scheme, 3, true);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    All, EigenLimitMixedMeshes,
+    ::testing::Combine(::testing::Values("mixed/checker_cube.obj", "mixed/cylinder_capped.obj", "mixed/cylinder_capped_creased.obj",
+                                         "mixed/mixed_torus.obj", "mixed/split_plane.obj", "mixed/book_nonmanifold.obj"),
+                       ::testing::Values(Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly)),
+    [](const auto& info) {
+        return testNameOf(std::get<0>(info.param)) + "_" + testNameOf(toString(std::get<1>(info.param)));
+    });
+
+}  // namespace
