@@ -2,13 +2,10 @@
 // fixed left vector gives the position, the subdominant left subspace the tangent plane, and its
 // basis is chosen so that it maps the configuration's plane layout to the identity (a fixed
 // orientation: tangent1 × tangent2 points the way the faces turn).
-#include "far/internal/eigen_limit.h"
+#include "far/internal/configuration_limit.h"
 
 #include <chrono>
 #include <cmath>
-#include <map>
-#include <memory>
-#include <mutex>
 #include <string>
 
 #include "far/internal/eigen_analysis.h"
@@ -64,12 +61,12 @@ bool isClean(const SubdominantSpace& space) { return space.converged && space.la
 
 }  // namespace
 
-std::optional<ConfigurationLimit> analyseConfiguration(const VertexConfiguration& c, const Options& options) {
+std::optional<LocalLimitMask> analyseConfiguration(const VertexConfiguration& c, const Options& options) {
     const auto start = std::chrono::steady_clock::now();
     const std::optional<LocalMatrix> m = buildLocalMatrix(c, options);
     if (!m) return std::nullopt;
     const int n = m->size;
-    ConfigurationLimit out;
+    LocalLimitMask out;
     out.rings = m->rings;
     out.signature = m->signature;
     std::optional<std::vector<double>> l0 = fixedLeftVector(m->S, n);
@@ -92,65 +89,30 @@ std::optional<ConfigurationLimit> analyseConfiguration(const VertexConfiguration
         basis = estimatedTangents(*m, *l0);
         if (!alignToLayout(basis, m->layout, n)) basis.assign(2 * size_t(n), 0.0);
     }
-    out.tangent1.assign(basis.begin(), basis.begin() + n);
-    out.tangent2.assign(basis.begin() + n, basis.end());
+    out.du.assign(basis.begin(), basis.begin() + n);
+    out.dv.assign(basis.begin() + n, basis.end());
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
 }
 
 namespace {
 
-// Everything the masks depend on besides the configuration itself.
-std::string cacheKey(const VertexConfiguration& c, const Options& options) {
-    std::string key = c.key();
-    key += options.smoothTriangles ? "/s" : "/-";
-    return key;
-}
-
-struct Cache {
-    std::mutex mutex;
-    std::map<std::string, std::unique_ptr<const ConfigurationLimit>> entries;  // null: no closed neighbourhood
-};
-
-Cache& cache() {
-    static Cache c;
-    return c;
+// The configuration's key (VertexConfiguration::key) and what else changes its masks.
+std::vector<int> cacheKey(const VertexConfiguration& c, const Options& options) {
+    const std::string key = c.key();
+    std::vector<int> k(key.begin(), key.end());
+    k.push_back(options.smoothTriangles ? 1 : 0);
+    k.push_back(int(options.creaseMethod));
+    return k;
 }
 
 }  // namespace
 
-// Analysed outside the lock: two threads meeting a new configuration at once may both analyse
-// it (the same result); the first stored is kept.
-const ConfigurationLimit* cachedLimit(const VertexConfiguration& c, const Options& options) {
-    const std::string key = cacheKey(c, options);
-    Cache& store = cache();
-    {
-        std::lock_guard<std::mutex> lock(store.mutex);
-        const auto it = store.entries.find(key);
-        if (it != store.entries.end()) return it->second.get();
-    }
-    std::optional<ConfigurationLimit> analysed = analyseConfiguration(c, options);
-    std::unique_ptr<const ConfigurationLimit> entry =
-        analysed ? std::make_unique<const ConfigurationLimit>(std::move(*analysed)) : nullptr;
-    std::lock_guard<std::mutex> lock(store.mutex);
-    return store.entries.emplace(key, std::move(entry)).first->second.get();
-}
-
-std::optional<VertexLimitMasks> eigenLimitMasks(const Topology& t, int vertex, const Options& options) {
-    const std::optional<VertexFan> fan = fanOf(t, vertex, options);
-    if (!fan) return std::nullopt;
-    const ConfigurationLimit* limit = cachedLimit(fan->configuration, options);
-    if (!limit) return std::nullopt;
-    Neighbourhood ring = gatherNeighbourhood(t, vertex, fan->faces[0], limit->rings);
-    if (ring.vertices.size() != limit->position.size()) return std::nullopt;
-    VertexLimitMasks masks;
-    masks.vertices = std::move(ring.vertices);
-    masks.position = limit->position;
-    masks.tangent1 = limit->tangent1;
-    masks.tangent2 = limit->tangent2;
-    masks.analysis = limit;
-    masks.settled = gatherNeighbourhood(t, vertex, fan->faces[0], limit->rings + 1).signature == limit->signature;
-    return masks;
+const LocalLimitMask& cachedLimit(const VertexConfiguration& c, const Options& options, LimitMaskCache& cache) {
+    std::vector<int> key = cacheKey(c, options);
+    if (const LocalLimitMask* found = cache.find(key)) return *found;
+    std::optional<LocalLimitMask> analysed = analyseConfiguration(c, options);
+    return cache.insert(std::move(key), analysed ? std::move(*analysed) : LocalLimitMask{});
 }
 
 }  // namespace v0

@@ -1,0 +1,145 @@
+// The generic limit masks (docs/limit_eigen.md): a vertex's configuration is analysed once (its
+// local subdivision matrix's eigen-structure, far/configuration_limit.cpp) and its masks laid over
+// the vertex's ring neighbourhood. Where that neighbourhood is not yet the configuration's own (another
+// irregularity within a ring or two, a semi-sharp crease still decaying, a face that is not a
+// triangle or quad), a patch around the vertex is refined locally until it is, and the
+// descendant's masks are brought back through the patch tables: the same limit, exactly.
+#include "far/internal/limit_eigen.h"
+
+#include <array>
+#include <map>
+
+#include "far/internal/configuration_limit.h"
+#include "far/internal/crease.h"
+#include "far/internal/limit_deeper.h"
+
+namespace quadtri {
+inline namespace v0 {
+
+namespace {
+
+// Levels refined locally at most: enough for a crease of sharpness up to this to decay and for
+// any irregularity near the vertex to fall behind its neighbourhood.
+constexpr int kMaxDeeperLevels = 10;
+
+// A mask as three weights per vertex of some level.
+using SparseMask = std::map<int, std::array<double, 3>>;  // ordered: the same table on every run
+
+// Whether the configuration's vertex follows the corner rule (no tangent plane).
+bool isCornerRule(const VertexConfiguration& c) {
+    int sharp = 0;
+    for (uint8_t s : c.sharpRays) sharp += s;
+    const bool loneFaceCorner = c.open && c.faceSizes.size() == 1 && c.boundary == BoundaryInterpolation::EdgeAndCorner;
+    return c.corner || sharp > 2 || loneFaceCorner;
+}
+
+// Where there is no limit to analyse (a non-manifold vertex, holes around it, a neighbourhood
+// that never settles): the vertex itself, and the two edges of `face` at it as the tangent pair.
+void ownPositionAndFaceEdges(const Topology& t, int v, int face, SparseMask& m) {
+    m[v][0] += 1.0;
+    if (face < 0) {
+        if (t.vertexFaceCount(v) == 0) return;
+        face = t.facesOfVertex(v)[0];
+    }
+    const IndexSpan c = t.verticesOfFace(face);
+    const int i = t.cornerOfVertex(face, v), n = c.size();
+    m[c[(i + 1) % n]][1] += 1.0;
+    m[v][1] -= 1.0;
+    m[c[(i + n - 1) % n]][2] += 1.0;
+    m[v][2] -= 1.0;
+}
+
+struct Found {
+    const LocalLimitMask* analysis = nullptr;
+    bool settled = false;
+};
+
+// The configuration's masks at v of level t if its neighbourhood there is the configuration's own
+// (or, with `acceptUnsettled`, at least as large). A corner takes the two edges of `firstFace`
+// (-1: of its fan's first face) as its tangents.
+Found laidOver(const Topology& t, int v, const Options& options, int firstFace, LimitMaskCache& cache,
+               bool acceptUnsettled, SparseMask& m) {
+    Found found;
+    const std::optional<VertexFan> fan = fanOf(t, v, options);
+    if (!fan) return found;
+    const LocalLimitMask& limit = cachedLimit(fan->configuration, options, cache);
+    if (limit.rings == 0) return found;
+    const Neighbourhood ring = gatherNeighbourhood(t, v, fan->faces[0], limit.rings);
+    if (ring.vertices.size() != limit.position.size()) return found;
+    found.settled = gatherNeighbourhood(t, v, fan->faces[0], limit.rings + 1).signature == limit.signature;
+    if (!found.settled && !acceptUnsettled) return found;
+    found.analysis = &limit;
+    if (isCornerRule(fan->configuration)) {
+        for (size_t k = 0; k < ring.vertices.size(); ++k) m[ring.vertices[k]][0] += limit.position[k];
+        SparseMask edges;
+        ownPositionAndFaceEdges(t, v, firstFace >= 0 ? firstFace : fan->faces[0], edges);
+        for (const auto& [u, w] : edges) {
+            m[u][1] += w[1];
+            m[u][2] += w[2];
+        }
+        return found;
+    }
+    for (size_t k = 0; k < ring.vertices.size(); ++k) {
+        auto& w = m[ring.vertices[k]];
+        w[0] += limit.position[k];
+        w[1] += limit.du[k];
+        w[2] += limit.dv[k];
+    }
+    return found;
+}
+
+// `m` over a patch's child vertices brought back over the vertices the patch was cut from.
+SparseMask throughPatch(const PatchStep& step, const SparseMask& m) {
+    SparseMask out;
+    for (const auto& [child, w] : m) {
+        const StencilTableD& t = step.table;
+        for (int k = t.offsets[child]; k < t.offsets[child] + t.sizes[child]; ++k) {
+            auto& o = out[step.source[t.indices[k]]];
+            for (int c = 0; c < 3; ++c) o[c] += t.weights[k] * w[c];
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& options, int firstFace,
+                            LimitMaskCache& cache, LimitMask& out) {
+    EigenLimitReport report;
+    SparseMask m;
+    const bool noLimit = (level.vertFlags[vertex] & kVertexNonManifold) || level.vertexFaceCount(vertex) == 0;
+    std::vector<PatchStep> steps;
+    if (!noLimit) {
+        for (int depth = 0; depth <= kMaxDeeperLevels; ++depth) {
+            const Topology& t = steps.empty() ? level : steps.back().child;
+            const int v = steps.empty() ? vertex : steps.back().descendant;
+            const Found found =
+                laidOver(t, v, options, depth == 0 ? firstFace : -1, cache, depth == kMaxDeeperLevels, m);
+            if (found.analysis) {
+                report.analysis = found.analysis;
+                report.settled = found.settled;
+                report.deeperLevels = depth;
+                break;
+            }
+            if (depth < kMaxDeeperLevels) steps.push_back(refinePatch(t, v, options));
+        }
+    }
+    if (!report.analysis) {
+        m.clear();
+        steps.clear();
+        ownPositionAndFaceEdges(level, vertex, firstFace, m);
+    }
+    for (auto step = steps.rbegin(); step != steps.rend(); ++step) m = throughPatch(*step, m);
+    // The fan is read in the faces' listed order; dU × dV must point where their winding says.
+    const double flip = options.leftHanded ? -1.0 : 1.0;
+    for (const auto& [u, w] : m) out.add(u, w[0], w[1], flip * w[2]);
+    return report;
+}
+
+void limitFromLocalMatrix(const SchemeRules&, const LimitVertex& vertex, LimitMaskCache& cache, LimitMask& out) {
+    eigenLimit(vertex.level, vertex.ring.vertex, vertex.options, vertex.ring.faces.empty() ? -1 : vertex.ring.faces[0],
+               cache, out);
+}
+
+}  // namespace v0
+}  // namespace quadtri
