@@ -17,6 +17,9 @@
 #include <vector>
 
 #include "far/internal/crease.h"
+#include "far/internal/refine_topology.h"
+#include "far/internal/rules.h"
+#include "far/internal/topology_builder.h"
 #include "far/internal/eigen_analysis.h"
 #include "far/internal/configuration_limit.h"
 #include "far/internal/limit_eigen.h"
@@ -245,24 +248,39 @@ struct Convergence {
     int levels = 0;            // refined this many levels further
     double ratio = 0;          // ring distance to the limit, last level over the one before
     double normalDegrees = 0;  // the computed normal against the refined mesh's at the last level
+    double normalRate = 0;     // how that angle shrank per level over the last four
 };
 
 Vec3 vertexPosition(const std::vector<double>& pos, int v) { return {pos[3 * size_t(v)], pos[3 * size_t(v) + 1], pos[3 * size_t(v) + 2]}; }
 
 // Levels to refine past the level where the vertex's neighbourhood is its configuration's: six,
 // or more where the next eigenvalue is close to the pair, until its share of the refined ring,
-// (λ3/λ2)^k, is under 1 % (it tilts the refined mesh's normal by about that much; a semi-sharp
-// crease still decaying counts no level, which is why the levels the limit followed the vertex
-// down are added).
-int levelsFor(const LocalLimitMask& a) {
+// (λ3/λ2)^k, is under 1 % (it tilts the refined mesh's normal by about that much), but no further
+// than the ring shrinks to 1e-9 of its size (double precision). A semi-sharp crease still
+// decaying counts no level, which is why the levels the limit followed the vertex down are added.
+int levelsFor(const LocalLimitMask& a, int deeperLevels) {
     const double q = a.lambda3 / a.lambda2;
-    if (!(q > 0 && q < 1)) return 6;
-    return std::max(6, std::min(16, int(std::ceil(std::log(0.01) / std::log(q)))));
+    const int wanted = q > 0 && q < 1 ? std::max(6, int(std::ceil(std::log(0.01) / std::log(q)))) : 6;
+    const int feasible = int(std::log(1e-9) / std::log(a.lambda1));
+    return std::min(wanted, feasible) + deeperLevels;
 }
 
-// Refines the neighbourhood of v, one level at a time on a patch cut around the descendant (wide
-// enough that its boundary never reaches the rings measured), moved so that the computed limit is
-// at the origin (float weights then add no error of the size of the mesh).
+// The area-weighted normal of the faces around u.
+Vec3 meshNormal(const Topology& t, const std::vector<double>& p, int u) {
+    Vec3 n{0, 0, 0};
+    for (int f : t.facesOfVertex(u)) {
+        const IndexSpan c = t.verticesOfFace(f);
+        const int i = t.cornerOfVertex(f, u), k = c.size();
+        const Vec3 a = vertexPosition(p, u);
+        const Vec3 fn = cross(sub(vertexPosition(p, c[(i + 1) % k]), a), sub(vertexPosition(p, c[(i + k - 1) % k]), a));
+        for (int x = 0; x < 3; ++x) n[x] += fn[x];
+    }
+    return n;
+}
+
+// Refines the neighbourhood of v level by level on a patch cut around the descendant (wide
+// enough that its boundary never reaches the rings measured), in double, moved so that the
+// computed limit is at the origin.
 Convergence converge(const Topology& t, const std::vector<double>& pos, int v, Options o, const VertexLimit& m) {
     const Vec3 limit = apply(m.vertices, m.position, pos);
     const Vec3 normal = cross(apply(m.vertices, m.du, pos), apply(m.vertices, m.dv, pos));
@@ -275,32 +293,27 @@ Convergence converge(const Topology& t, const std::vector<double>& pos, int v, O
     };
     std::vector<double> moved = pos;
     for (size_t i = 0; i < moved.size(); ++i) moved[i] -= limit[i % 3];
-    std::vector<double> distances{ringDistance(t, moved, v)};
+    std::vector<double> distances{ringDistance(t, moved, v)}, angles;
     Patch patch = extract(t, moved, v, rings);
     Convergence out;
-    out.levels = levelsFor(*m.report.analysis) + m.report.deeperLevels;
+    out.levels = levelsFor(*m.report.analysis, m.report.deeperLevels);
     for (int level = 1; level <= out.levels; ++level) {
-        Refiner r(patch.mesh.descriptor(), o);
-        r.refineUniform(1, TopologyDetail::Full);
-        const std::vector<double> next = refinePositions(r, patch.pos, 0, 1);
-        const Topology& child = r.level(1);
-        const int u = childOfVertex(r.level(0), patch.v);
+        const Topology parent = buildBaseTopology(patch.mesh.descriptor(), o);
+        const ChildNumbering num = numberChildren(parent, TriangleSplit::FourTriangles);
+        const StencilTableD table = buildLevelStencils<StencilTableD>(parent, num, o);
+        const Topology child = refineTopology(parent, num, o.creaseMethod, TopologyDetail::Full);
+        std::vector<double> next(3 * size_t(child.numVertices), 0.0);
+        for (int i = 0; i < child.numVertices; ++i)
+            for (int k = table.offsets[i]; k < table.offsets[i] + table.sizes[i]; ++k)
+                for (int c = 0; c < 3; ++c) next[3 * size_t(i) + c] += table.weights[k] * patch.pos[3 * size_t(table.indices[k]) + c];
+        const int u = num.vertexPoint(patch.v);
         distances.push_back(ringDistance(child, next, u));
-        if (level == out.levels) {
-            Vec3 n{0, 0, 0};
-            for (int f : child.facesOfVertex(u)) {
-                const IndexSpan c = child.verticesOfFace(f);
-                const int i = child.cornerOfVertex(f, u), k = c.size();
-                const Vec3 a = vertexPosition(next, u);
-                const Vec3 fn = cross(sub(vertexPosition(next, c[(i + 1) % k]), a), sub(vertexPosition(next, c[(i + k - 1) % k]), a));
-                for (int x = 0; x < 3; ++x) n[x] += fn[x];
-            }
-            out.normalDegrees = angleDegrees(n, normal);
-        } else {
-            patch = extract(child, next, u, rings);
-        }
+        angles.push_back(angleDegrees(meshNormal(child, next, u), normal));
+        patch = extract(child, next, u, rings);
     }
     out.ratio = distances[size_t(out.levels)] / distances[size_t(out.levels) - 1];
+    out.normalDegrees = angles.back();
+    out.normalRate = angles.size() > 4 ? std::pow(angles.back() / angles[angles.size() - 5], 0.25) : 0.0;
     return out;
 }
 
@@ -355,25 +368,47 @@ void checkMesh(const LocalMesh* ring, const std::string& file, Scheme scheme, in
         EXPECT_NEAR(sum(l.du), 0.0, 1e-12);
         EXPECT_NEAR(sum(l.dv), 0.0, 1e-12);
         const Convergence c = converge(t, pos, v, o, l);
-        std::printf("  %-20s L%d %-17s %-26s N %d x %3zu  lambda %.5f %.5f (im %.0e) next %.5f  %s  +%2d levels: ratio %.5f  normal %.4f deg  %.2f ms\n",
+        std::printf("  %-20s L%d %-17s %-26s N %d x %3zu  lambda %.5f %.5f (im %.0e) next %.5f  %s  +%2d levels: ratio %.5f  normal %.4f deg (x%.3f/level)  %.2f ms\n",
                     ring ? "(ring mesh)" : file.c_str(), L0, toString(scheme), key.c_str(), a.rings, a.position.size(),
                     a.lambda1, a.lambda2, a.imaginary, a.lambda3, a.tangents == TangentSource::Eigen ? "eigen   " : "estimate",
-                    c.levels, c.ratio, c.normalDegrees, 1e3 * a.seconds);
+                    c.levels, c.ratio, c.normalDegrees, c.normalRate, 1e3 * a.seconds);
         EXPECT_NEAR(c.ratio, a.lambda1, 0.1 * a.lambda1);
-        EXPECT_LT(c.normalDegrees, 0.5);
+        // Within 0.5°, or, where λ3 is too close to the pair for the refined mesh to get there
+        // (catmark-butterfly's irregular seams, docs/limit_eigen.md), closing in on the computed
+        // normal at the rate λ3/λ2 per level.
+        if (c.normalDegrees >= 0.5) {
+            EXPECT_LT(c.normalRate, 1.1 * a.lambda3 / a.lambda2) << c.normalDegrees << " degrees";
+        }
     }
     if (!ring)
         std::printf("  %s %s level %d: %d configurations checked, %d of them through local refinement\n", file.c_str(),
                     toString(scheme), L0, checked, unsettled);
 }
 
-// Stam-Loop at valence 3-6 with 1 .. n-1 triangles, triangles together and (valence 4-6) split.
-TEST(EigenLimitConvergence, StamLoopMixedValences) {
-    for (const std::string ring : {"QT", "QTT", "QQT", "QTTT", "QQTT", "QQQT", "QTQT", "QTTTT", "QQTTT", "QQQTT", "QQQQT",
-                                   "QTQTT", "QTTTTT", "QQTTTT", "QQQTTT", "QQQQTT", "QQQQQT", "QTQTQT", "QQTQTT"}) {
-        SCOPED_TRACE(ring);
-        const RingMesh r = buildRingMesh(ring);
-        checkMesh(&r.mesh, ring, Scheme::StamLoop, 2, true);
+// Valence 3-6 with 1 .. n-1 triangles, triangles together and (valence 4-6) split, under each
+// quad/triangle scheme.
+TEST(EigenLimitConvergence, MixedValences) {
+    for (Scheme scheme : {Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly})
+        for (const std::string ring : {"QTT", "QQT", "QTTT", "QQTT", "QQQT", "QTQT", "QTTTT", "QQTTT", "QQQTT", "QQQQT",
+                                       "QTQTT", "QTTTTT", "QQTTTT", "QQQTTT", "QQQQTT", "QQQQQT", "QTQTQT", "QQTQTT"}) {
+            SCOPED_TRACE(ring);
+            const RingMesh r = buildRingMesh(ring);
+            checkMesh(&r.mesh, ring, scheme, 2, true);
+        }
+}
+
+// catmark-butterfly's triangle-only vertices are interpolated: their own limit.
+TEST(EigenLimit, ButterflyTriangleVerticesAreTheirOwnLimit) {
+    for (int n = 3; n <= 8; ++n) {
+        const RingMesh r = buildRingMesh(std::string(size_t(n), 'T'));
+        const Options o = withScheme(Scheme::CatmarkButterfly);
+        Refiner refiner(r.mesh.descriptor(), o);
+        const VertexLimit l = limitAt(refiner.level(0), r.center, o);
+        ASSERT_TRUE(l.report.analysis);
+        std::vector<double> expected(size_t(r.mesh.numVertices), 0.0);
+        expected[r.center] = 1.0;
+        EXPECT_LE(maxAbsDifference(densePosition(l, r.mesh.numVertices), expected), 1e-12) << "valence " << n;
+        EXPECT_EQ(l.report.analysis->tangents, TangentSource::Eigen) << "valence " << n;
     }
 }
 
