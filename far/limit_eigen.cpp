@@ -130,9 +130,9 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
         ownPositionAndFaceEdges(level, vertex, firstFace, m);
     }
     for (auto step = steps.rbegin(); step != steps.rend(); ++step) m = throughPatch(*step, m);
-    // The fan is read in the faces' listed order; dU × dV must point where their winding says.
-    const double flip = options.leftHanded ? -1.0 : 1.0;
-    for (const auto& [u, w] : m) out.add(u, w[0], w[1], flip * w[2]);
+    // Topology stores faces counter-clockwise seen from outside (left-handed input reversed), the
+    // way the fan is read: dU × dV points outside.
+    for (const auto& [u, w] : m) out.add(u, w[0], w[1], w[2]);
     return report;
 }
 
