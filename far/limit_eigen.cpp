@@ -25,16 +25,9 @@ constexpr int kMaxDeeperLevels = 10;
 // A mask as three weights per vertex of some level.
 using SparseMask = std::map<int, std::array<double, 3>>;  // ordered: the same table on every run
 
-// Whether the configuration's vertex follows the corner rule (no tangent plane).
-bool isCornerRule(const VertexConfiguration& c) {
-    int sharp = 0;
-    for (uint8_t s : c.sharpRays) sharp += s;
-    const bool loneFaceCorner = c.open && c.faceSizes.size() == 1 && c.boundary == BoundaryInterpolation::EdgeAndCorner;
-    return c.corner || sharp > 2 || loneFaceCorner;
-}
-
-// Where there is no limit to analyse (a non-manifold vertex, holes around it, a neighbourhood
-// that never settles): the vertex itself, and the two edges of `face` at it as the tangent pair.
+// Where there is no limit to analyse (a non-manifold vertex, one without faces) or none needed (a
+// fixed corner): the vertex itself, and the two edges of `face` at it (-1: its first face in
+// Topology's order) as the tangent pair.
 void ownPositionAndFaceEdges(const Topology& t, int v, int face, SparseMask& m) {
     m[v][0] += 1.0;
     if (face < 0) {
@@ -49,16 +42,25 @@ void ownPositionAndFaceEdges(const Topology& t, int v, int face, SparseMask& m) 
     m[v][2] -= 1.0;
 }
 
+// A corner whose sharpness never decays: every level keeps it in place, so it is its own limit
+// at any level, and its tangents are its first face's edges there.
+bool isFixedCorner(const Topology& t, int v, const Options& options) {
+    if (isInfinite(t.vertSharpness[v])) return true;
+    int sharp = 0;
+    for (int e : t.edgesOfVertex(v)) sharp += isInfinite(t.edgeSharpness[e]) || t.edgeFaceCount(e) == 1 ? 1 : 0;
+    const bool loneFace = (t.vertFlags[v] & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner;
+    return sharp > 2 || loneFace;
+}
+
 struct Found {
     const LocalLimitMask* analysis = nullptr;
     bool settled = false;
 };
 
 // The configuration's masks at v of level t if its neighbourhood there is the configuration's own
-// (or, with `acceptUnsettled`, at least as large). A corner takes the two edges of `firstFace`
-// (-1: of its fan's first face) as its tangents.
-Found laidOver(const Topology& t, int v, const Options& options, int firstFace, LimitMaskCache& cache,
-               bool acceptUnsettled, SparseMask& m) {
+// (or, with `acceptUnsettled`, at least as large).
+Found laidOver(const Topology& t, int v, const Options& options, LimitMaskCache& cache, bool acceptUnsettled,
+               SparseMask& m) {
     Found found;
     const std::optional<VertexFan> fan = fanOf(t, v, options);
     if (!fan) return found;
@@ -69,16 +71,6 @@ Found laidOver(const Topology& t, int v, const Options& options, int firstFace, 
     found.settled = gatherNeighbourhood(t, v, fan->faces[0], limit.rings + 1).signature == limit.signature;
     if (!found.settled && !acceptUnsettled) return found;
     found.analysis = &limit;
-    if (isCornerRule(fan->configuration)) {
-        for (size_t k = 0; k < ring.vertices.size(); ++k) m[ring.vertices[k]][0] += limit.position[k];
-        SparseMask edges;
-        ownPositionAndFaceEdges(t, v, firstFace >= 0 ? firstFace : fan->faces[0], edges);
-        for (const auto& [u, w] : edges) {
-            m[u][1] += w[1];
-            m[u][2] += w[2];
-        }
-        return found;
-    }
     for (size_t k = 0; k < ring.vertices.size(); ++k) {
         auto& w = m[ring.vertices[k]];
         w[0] += limit.position[k];
@@ -107,14 +99,15 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
                             LimitMaskCache& cache, LimitMask& out) {
     EigenLimitReport report;
     SparseMask m;
-    const bool noLimit = (level.vertFlags[vertex] & kVertexNonManifold) || level.vertexFaceCount(vertex) == 0;
+    // Nothing to analyse at a non-manifold or isolated vertex; nothing needed at a fixed corner.
+    const bool ownLimit = (level.vertFlags[vertex] & kVertexNonManifold) || level.vertexFaceCount(vertex) == 0 ||
+                          isFixedCorner(level, vertex, options);
     std::vector<PatchStep> steps;
-    if (!noLimit) {
+    if (!ownLimit) {
         for (int depth = 0; depth <= kMaxDeeperLevels; ++depth) {
             const Topology& t = steps.empty() ? level : steps.back().child;
             const int v = steps.empty() ? vertex : steps.back().descendant;
-            const Found found =
-                laidOver(t, v, options, depth == 0 ? firstFace : -1, cache, depth == kMaxDeeperLevels, m);
+            const Found found = laidOver(t, v, options, cache, depth == kMaxDeeperLevels, m);
             if (found.analysis) {
                 report.analysis = found.analysis;
                 report.settled = found.settled;
@@ -128,6 +121,7 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
         m.clear();
         steps.clear();
         ownPositionAndFaceEdges(level, vertex, firstFace, m);
+        report.settled = isFixedCorner(level, vertex, options);  // exact there
     }
     for (auto step = steps.rbegin(); step != steps.rend(); ++step) m = throughPatch(*step, m);
     // Topology stores faces counter-clockwise seen from outside (left-handed input reversed), the

@@ -321,14 +321,37 @@ bool isMixed(const VertexConfiguration& c) {
     return std::count(c.faceSizes.begin(), c.faceSizes.end(), 3) > 0 && std::count(c.faceSizes.begin(), c.faceSizes.end(), 4) > 0;
 }
 
+// A curved surface over a ring mesh: the neighbours around the centre in order (a little
+// uneven), the quads' corners between them further out, a height that is not symmetric, the
+// cone's apex below.
+std::vector<double> ringGeometry(const RingMesh& r) {
+    const int n = int(r.ring.size());
+    std::vector<double> xyz(3 * size_t(r.mesh.numVertices), 0.0);
+    auto place = [&](int v, double angle, double radius) {
+        const double x = radius * std::cos(angle), y = radius * std::sin(angle);
+        xyz[3 * size_t(v)] = x;
+        xyz[3 * size_t(v) + 1] = y;
+        xyz[3 * size_t(v) + 2] = 0.3 * x * x - 0.2 * x * y + 0.1 * y * y * y;
+    };
+    place(r.center, 0, 0);
+    for (int i = 0; i < n; ++i) {
+        place(r.p[i], 2 * kPi * i / n, 1.0 + 0.1 * std::sin(3.0 * i));
+        if (r.q[i] >= 0) place(r.q[i], 2 * kPi * (i + 0.5) / n, 1.4);
+    }
+    xyz[3 * size_t(r.apex)] = 0.1;
+    xyz[3 * size_t(r.apex) + 1] = -0.05;
+    xyz[3 * size_t(r.apex) + 2] = -1.5;
+    return xyz;
+}
+
 // Every configuration met at level `L0` of a mesh (the first vertex of each), checked.
-void checkMesh(const LocalMesh* ring, const std::string& file, Scheme scheme, int L0, bool mixedOnly) {
+void checkMesh(const RingMesh* ring, const std::string& file, Scheme scheme, int L0, bool mixedOnly) {
     io::ObjMesh obj;
     Options o = withScheme(scheme);
     std::vector<double> control;
     TopologyDescriptor desc;
     if (ring) {
-        desc = ring->descriptor();
+        desc = ring->mesh.descriptor();
     } else {
         obj = io::readObj(meshPath(file));
         o = obj.applyTags(o);
@@ -337,15 +360,7 @@ void checkMesh(const LocalMesh* ring, const std::string& file, Scheme scheme, in
     }
     Refiner refiner(desc, o);
     refiner.refineUniform(L0, TopologyDetail::Full);
-    if (ring) {
-        for (int v = 0; v < ring->numVertices; ++v) {  // a generic surface over the ring mesh
-            const double a = 2.1 * v + 0.3, rad = v == 0 ? 0.0 : 1.0 + 0.15 * std::sin(3.0 * v);
-            const double x = rad * std::cos(a), y = rad * std::sin(a);
-            control.insert(control.end(), {x, y, 0.3 * x * x - 0.2 * x * y + 0.1 * y * y * y});
-        }
-        const double apex[3] = {0.1, -0.05, -1.5};  // closes the ring below
-        for (int c = 0; c < 3; ++c) control[3 * size_t(ring->numVertices - 1) + c] = apex[c];
-    }
+    if (ring) control = ringGeometry(*ring);
     const std::vector<double> pos = refinePositions(refiner, control, 0, L0);
     const Topology& t = refiner.level(L0);
     std::map<std::string, int> seen;
@@ -368,6 +383,7 @@ void checkMesh(const LocalMesh* ring, const std::string& file, Scheme scheme, in
         EXPECT_NEAR(sum(l.du), 0.0, 1e-12);
         EXPECT_NEAR(sum(l.dv), 0.0, 1e-12);
         const Convergence c = converge(t, pos, v, o, l);
+        // The angle is also the orientation: dU × dV against the refined faces' own normal.
         std::printf("  %-20s L%d %-17s %-26s N %d x %3zu  lambda %.5f %.5f (im %.0e) next %.5f  %s  +%2d levels: ratio %.5f  normal %.4f deg (x%.3f/level)  %.2f ms\n",
                     ring ? "(ring mesh)" : file.c_str(), L0, toString(scheme), key.c_str(), a.rings, a.position.size(),
                     a.lambda1, a.lambda2, a.imaginary, a.lambda3, a.tangents == TangentSource::Eigen ? "eigen   " : "estimate",
@@ -393,7 +409,7 @@ TEST(EigenLimitConvergence, MixedValences) {
                                        "QTQTT", "QTTTTT", "QQTTTT", "QQQTTT", "QQQQTT", "QQQQQT", "QTQTQT", "QQTQTT"}) {
             SCOPED_TRACE(ring);
             const RingMesh r = buildRingMesh(ring);
-            checkMesh(&r.mesh, ring, scheme, 2, true);
+            checkMesh(&r, ring, scheme, 2, true);
         }
 }
 
@@ -409,6 +425,84 @@ TEST(EigenLimit, ButterflyTriangleVerticesAreTheirOwnLimit) {
         expected[r.center] = 1.0;
         EXPECT_LE(maxAbsDifference(densePosition(l, r.mesh.numVertices), expected), 1e-12) << "valence " << n;
         EXPECT_EQ(l.report.analysis->tangents, TangentSource::Eigen) << "valence " << n;
+    }
+}
+
+// A ring mesh's centre with the geometry of ringGeometry, at level 0.
+struct RingCase {
+    RingMesh r;
+    Options o;
+    std::vector<double> pos;
+};
+
+// An infinitely sharp crease through a mixed vertex: a tangent plane on each side, so no clean
+// pair (1/2 three times: along the crease and across it on either side). The estimate's masks
+// still sum to 0, turn the right way, and the ring closes in on the crease's limit point at 1/2.
+TEST(EigenLimit, CreaseThroughAMixedVertexTakesTheEstimate) {
+    for (Scheme s : {Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly}) {
+        SCOPED_TRACE(toString(s));
+        RingMesh r = buildRingMesh("QQTTT");
+        for (int end : {r.p[0], r.p[2]}) {
+            r.mesh.creasePairs.insert(r.mesh.creasePairs.end(), {r.center, end});
+            r.mesh.creaseWeights.push_back(kInfiniteSharpness);
+        }
+        const Options o = withScheme(s);
+        Refiner refiner(r.mesh.descriptor(), o);
+        refiner.refineUniform(2, TopologyDetail::Full);
+        const std::vector<double> pos = refinePositions(refiner, ringGeometry(r), 0, 2);
+        const Topology& t = refiner.level(2);
+        const int v = childOfVertex(refiner.level(1), childOfVertex(refiner.level(0), r.center));
+        const VertexLimit l = limitAt(t, v, o);
+        ASSERT_TRUE(l.report.analysis);
+        EXPECT_TRUE(l.report.settled);
+        EXPECT_EQ(l.report.analysis->tangents, TangentSource::Estimate);
+        EXPECT_NEAR(l.report.analysis->lambda1, 0.5, 1e-6);
+        EXPECT_NEAR(l.report.analysis->lambda3, 0.5, 1e-6);
+        EXPECT_NEAR(sum(l.position), 1.0, 1e-12);
+        EXPECT_NEAR(sum(l.du), 0.0, 1e-12);
+        EXPECT_NEAR(sum(l.dv), 0.0, 1e-12);
+        EXPECT_GT(cross(apply(l.vertices, l.du, pos), apply(l.vertices, l.dv, pos))[2], 0.0);
+        const Convergence c = converge(t, pos, v, o, l);
+        EXPECT_NEAR(c.ratio, 0.5, 0.05);
+        std::printf("  %s crease: estimate's normal %.2f degrees from the refined mesh's (both sides averaged)\n",
+                    toString(s), c.normalDegrees);
+    }
+}
+
+// A sharp mixed vertex (a corner) stays where it is; its tangents are its first face's two
+// edges, whatever the faces' winding was in the input (left-handed input is stored reversed).
+TEST(EigenLimit, CornerIsItsOwnLimitWithItsFirstFacesEdges) {
+    for (bool leftHanded : {false, true}) {
+        RingMesh r = buildRingMesh("QQTTT");
+        if (leftHanded) {  // the same surface, every face listed the other way round
+            LocalMesh flipped;
+            flipped.numVertices = r.mesh.numVertices;
+            int offset = 0;
+            for (int size : r.mesh.faceSizes) {
+                std::vector<int> face(r.mesh.faceVerts.begin() + offset, r.mesh.faceVerts.begin() + offset + size);
+                std::reverse(face.begin() + 1, face.end());
+                flipped.addFace(face);
+                offset += size;
+            }
+            r.mesh.faceSizes = flipped.faceSizes;
+            r.mesh.faceVerts = flipped.faceVerts;
+        }
+        r.mesh.corners.push_back(r.center);
+        r.mesh.cornerWeights.push_back(kInfiniteSharpness);
+        Options o = withScheme(Scheme::SchaeferWarren);
+        o.leftHanded = leftHanded;
+        Refiner refiner(r.mesh.descriptor(), o);
+        const std::vector<double> pos = ringGeometry(r);
+        const VertexLimit l = limitAt(refiner.level(0), r.center, o);
+        EXPECT_TRUE(l.report.settled) << leftHanded;  // exact: it never moves
+        std::vector<double> expected(size_t(r.mesh.numVertices), 0.0);
+        expected[r.center] = 1.0;
+        EXPECT_LE(maxAbsDifference(densePosition(l, r.mesh.numVertices), expected), 1e-9) << leftHanded;
+        int units = 0;
+        for (size_t k = 0; k < l.vertices.size(); ++k) units += (l.du[k] == 1.0) + (l.dv[k] == 1.0);
+        EXPECT_EQ(units, 2) << "dU and dV run along two edges";
+        EXPECT_NEAR(sum(l.du), 0.0, 1e-12);
+        EXPECT_GT(cross(apply(l.vertices, l.du, pos), apply(l.vertices, l.dv, pos))[2], 0.0) << leftHanded;
     }
 }
 
