@@ -2,6 +2,8 @@
 // ring neighbourhood in an order two equal configurations share (docs/limit_eigen.md).
 #include <algorithm>
 #include <deque>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "far/internal/crease.h"
@@ -119,21 +121,21 @@ namespace {
 
 int sharpnessClass(float s) { return isInfinite(s) ? 2 : isSharp(s) ? 1 : 0; }
 
-bool contains(const std::vector<int>& list, int x) { return std::find(list.begin(), list.end(), x) != list.end(); }
-
-// The faces of `rings` face rings around v.
+// The faces of `rings` face rings around v, sorted.
 std::vector<int> ringFaces(const Topology& t, int v, int rings) {
     std::vector<int> vertices{v}, faces;
+    std::unordered_set<int> seenVertices{v}, seenFaces;
     size_t reached = 0;  // vertices before this index have had their faces added
     for (int ring = 0; ring < rings; ++ring) {
-        const size_t end = vertices.size();
+        const size_t end = vertices.size(), firstNew = faces.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(vertices[reached]))
-                if (!contains(faces, f)) faces.push_back(f);
-        for (int f : faces)
-            for (int u : t.verticesOfFace(f))
-                if (!contains(vertices, u)) vertices.push_back(u);
+                if (seenFaces.insert(f).second) faces.push_back(f);
+        for (size_t i = firstNew; i < faces.size(); ++i)
+            for (int u : t.verticesOfFace(faces[i]))
+                if (seenVertices.insert(u).second) vertices.push_back(u);
     }
+    std::sort(faces.begin(), faces.end());
     return faces;
 }
 
@@ -144,16 +146,19 @@ std::vector<int> ringFaces(const Topology& t, int v, int rings) {
 // are read counter-clockwise from there, so the labels depend on the faces only.
 Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int rings) {
     const std::vector<int> region = ringFaces(t, v, rings);
+    auto inRegion = [&](int f) { return std::binary_search(region.begin(), region.end(), f); };
     Neighbourhood n;
+    std::unordered_map<int, int> labels;
     auto label = [&](int u) {
-        const auto it = std::find(n.vertices.begin(), n.vertices.end(), u);
-        if (it != n.vertices.end()) return int(it - n.vertices.begin());
-        n.vertices.push_back(u);
-        n.signature.push_back(sharpnessClass(t.vertSharpness[u]));
-        return int(n.vertices.size()) - 1;
+        const auto [it, added] = labels.emplace(u, int(n.vertices.size()));
+        if (added) {
+            n.vertices.push_back(u);
+            n.signature.push_back(sharpnessClass(t.vertSharpness[u]));
+        }
+        return it->second;
     };
     label(v);
-    std::vector<int> visited{startFace};
+    std::unordered_set<int> visited{startFace};
     std::deque<std::pair<int, int>> queue{{startFace, t.cornerOfVertex(startFace, v)}};
     while (!queue.empty()) {
         const auto [f, entry] = queue.front();
@@ -166,8 +171,7 @@ Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int r
             const int e = t.edgeOfCorner(f, entry + i);
             n.signature.push_back(sharpnessClass(t.edgeSharpness[e]) * 4 + std::min(t.edgeFaceCount(e), 3));
             for (int g : t.facesOfEdge(e)) {
-                if (g == f || !contains(region, g) || contains(visited, g)) continue;
-                visited.push_back(g);
+                if (g == f || !inRegion(g) || !visited.insert(g).second) continue;
                 queue.push_back({g, t.cornerOfVertex(g, corners[(entry + i + 1) % size])});
             }
         }
