@@ -25,8 +25,8 @@ constexpr int kMaxDeeperLevels = 10;
 // A mask as three weights per vertex of some level.
 using SparseMask = std::map<int, std::array<double, 3>>;  // ordered: the same table on every run
 
-// Where there is no limit to analyse (a non-manifold vertex, one without faces) or none needed (a
-// fixed corner): the vertex itself, and the two edges of `face` at it (-1: its first face in
+// Where there is no limit to analyse (a non-manifold vertex, one without faces or beside a hole)
+// or none needed (a fixed corner): the vertex itself, and the two edges of `face` at it (-1: its first face in
 // Topology's order) as the tangent pair.
 void ownPositionAndFaceEdges(const Topology& t, int v, int face, SparseMask& m) {
     m[v][0] += 1.0;
@@ -50,6 +50,12 @@ bool isFixedCorner(const Topology& t, int v, const Options& options) {
     for (int e : t.edgesOfVertex(v)) sharp += isInfinite(t.edgeSharpness[e]) || t.edgeFaceCount(e) == 1 ? 1 : 0;
     const bool loneFace = (t.vertFlags[v] & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner;
     return sharp > 2 || loneFace;
+}
+
+bool touchesHole(const Topology& t, int v) {
+    for (int f : t.facesOfVertex(v))
+        if (t.faceHole[f]) return true;
+    return false;
 }
 
 struct Found {
@@ -99,9 +105,10 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
                             LimitMaskCache& cache, LimitMask& out) {
     EigenLimitReport report;
     SparseMask m;
-    // Nothing to analyse at a non-manifold or isolated vertex; nothing needed at a fixed corner.
+    // Nothing to analyse at a non-manifold or isolated vertex or one beside a hole (its fan never
+    // closes into a configuration); nothing needed at a fixed corner.
     const bool ownLimit = (level.vertFlags[vertex] & kVertexNonManifold) || level.vertexFaceCount(vertex) == 0 ||
-                          isFixedCorner(level, vertex, options);
+                          touchesHole(level, vertex) || isFixedCorner(level, vertex, options);
     std::vector<PatchStep> steps;
     if (!ownLimit) {
         for (int depth = 0; depth <= kMaxDeeperLevels; ++depth) {
