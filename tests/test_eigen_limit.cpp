@@ -23,6 +23,7 @@
 #include "far/internal/eigen_analysis.h"
 #include "far/internal/configuration_limit.h"
 #include "far/internal/limit_eigen.h"
+#include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
 #include "tests/test_support.h"
@@ -249,6 +250,8 @@ struct Convergence {
     double ratio = 0;          // ring distance to the limit, last level over the one before
     double normalDegrees = 0;  // the computed normal against the refined mesh's at the last level
     double normalRate = 0;     // how that angle shrank per level over the last four
+    double centre = 0;         // the descendant's distance to the computed limit, at the last level
+    double ringDistance = 0;   // its ring's, at the last level
 };
 
 Vec3 vertexPosition(const std::vector<double>& pos, int v) { return {pos[3 * size_t(v)], pos[3 * size_t(v) + 1], pos[3 * size_t(v) + 2]}; }
@@ -312,6 +315,8 @@ Convergence converge(const Topology& t, const std::vector<double>& pos, int v, O
         patch = extract(child, next, u, rings);
     }
     out.ratio = distances[size_t(out.levels)] / distances[size_t(out.levels) - 1];
+    out.centre = norm(vertexPosition(patch.pos, patch.v));
+    out.ringDistance = distances.back();
     out.normalDegrees = angles.back();
     out.normalRate = angles.size() > 4 ? std::pow(angles.back() / angles[angles.size() - 5], 0.25) : 0.0;
     return out;
@@ -389,6 +394,9 @@ void checkMesh(const RingMesh* ring, const std::string& file, Scheme scheme, int
                     a.lambda1, a.lambda2, a.imaginary, a.lambda3, a.tangents == TangentSource::Eigen ? "eigen   " : "estimate",
                     c.levels, c.ratio, c.normalDegrees, c.normalRate, 1e3 * a.seconds);
         EXPECT_NEAR(c.ratio, a.lambda1, 0.1 * a.lambda1);
+        // The position: the descendant ends closer to the computed limit than its ring (a wrong
+        // limit would leave both at the error's distance, the ratio above going to 1).
+        EXPECT_LT(c.centre, c.ringDistance);
         // Within 0.5°, or, where λ3 is too close to the pair for the refined mesh to get there
         // (catmark-butterfly's irregular seams, docs/limit_eigen.md), closing in on the computed
         // normal at the rate λ3/λ2 per level.
@@ -504,6 +512,34 @@ TEST(EigenLimit, CornerIsItsOwnLimitWithItsFirstFacesEdges) {
         EXPECT_NEAR(sum(l.du), 0.0, 1e-12);
         EXPECT_GT(cross(apply(l.vertices, l.du, pos), apply(l.vertices, l.dv, pos))[2], 0.0) << leftHanded;
     }
+}
+
+// Through the public Refiner: every limit stencil of levels 0-2 of the mixed meshes (closed forms
+// and these masks together) sums to 1, 0 and 0.
+TEST(EigenLimit, RefinerLimitStencilsOfMixedMeshesSumToOneZeroZero) {
+    for (const char* file : {"mixed/checker_cube.obj", "mixed/cylinder_capped_creased.obj", "mixed/mixed_torus.obj",
+                             "mixed/split_plane.obj", "mixed/book_nonmanifold.obj"})
+        for (Scheme scheme : {Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly}) {
+            const io::ObjMesh obj = io::readObj(meshPath(file));
+            const Options o = obj.applyTags(withScheme(scheme));
+            Refiner refiner(obj.descriptor(), o);
+            refiner.refineUniform(2);
+            for (int L = 0; L <= 2; ++L) {
+                const LimitStencilTable t = refiner.limitStencils(L);
+                ASSERT_EQ(t.numStencils(), refiner.faces(L).numVertices()) << file;
+                double worst = 0;
+                for (int i = 0; i < t.numStencils(); ++i) {
+                    double p = 0, u = 0, v = 0;
+                    for (int k = 0; k < t.size(i); ++k) {
+                        p += t.weightsOf(i)[3 * k];
+                        u += t.weightsOf(i)[3 * k + 1];
+                        v += t.weightsOf(i)[3 * k + 2];
+                    }
+                    worst = std::max({worst, std::fabs(p - 1), std::fabs(u), std::fabs(v)});
+                }
+                EXPECT_LT(worst, 1e-5) << file << " " << toString(scheme) << " level " << L;
+            }
+        }
 }
 
 class EigenLimitMixedMeshes : public ::testing::TestWithParam<std::tuple<std::string, Scheme>> {};
