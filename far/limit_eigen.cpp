@@ -74,7 +74,7 @@ Found laidOver(const Topology& t, int v, const Options& options, LimitMaskCache&
     if (limit.rings == 0) return found;
     const Neighbourhood ring = gatherNeighbourhood(t, v, fan->faces[0], limit.rings);
     if (ring.vertices.size() != limit.position.size()) return found;
-    found.settled = gatherNeighbourhood(t, v, fan->faces[0], limit.rings + 1).signature == limit.signature;
+    found.settled = ring.signature == limit.signature;
     if (!found.settled && !acceptUnsettled) return found;
     found.analysis = &limit;
     for (size_t k = 0; k < ring.vertices.size(); ++k) {

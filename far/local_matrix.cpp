@@ -174,7 +174,7 @@ std::optional<LocalMatrix> buildLocalMatrix(const VertexConfiguration& c, const 
             }
         }
         if (!closed) continue;
-        m.signature = gatherNeighbourhood(t, 0, mesh.startFace(), rings + 1).signature;
+        m.signature = n.signature;
         return m;
     }
     return std::nullopt;

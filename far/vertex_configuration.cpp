@@ -121,38 +121,49 @@ namespace {
 
 int sharpnessClass(float s) { return isInfinite(s) ? 2 : isSharp(s) ? 1 : 0; }
 
-// The faces of `rings` face rings around v, sorted.
-std::vector<int> ringFaces(const Topology& t, int v, int rings) {
-    std::vector<int> vertices{v}, faces;
+// The faces of `rings` face rings around v (sorted), and the vertices of the first `inner` rings.
+struct Region {
+    std::vector<int> faces;
+    std::unordered_set<int> inner;
+};
+
+Region ringFaces(const Topology& t, int v, int rings, int inner) {
+    Region region;
+    std::vector<int> vertices{v};
     std::unordered_set<int> seenVertices{v}, seenFaces;
+    region.inner.insert(v);
     size_t reached = 0;  // vertices before this index have had their faces added
     for (int ring = 0; ring < rings; ++ring) {
-        const size_t end = vertices.size(), firstNew = faces.size();
+        const size_t end = vertices.size(), firstNew = region.faces.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(vertices[reached]))
-                if (seenFaces.insert(f).second) faces.push_back(f);
-        for (size_t i = firstNew; i < faces.size(); ++i)
-            for (int u : t.verticesOfFace(faces[i]))
-                if (seenVertices.insert(u).second) vertices.push_back(u);
+                if (seenFaces.insert(f).second) region.faces.push_back(f);
+        for (size_t i = firstNew; i < region.faces.size(); ++i)
+            for (int u : t.verticesOfFace(region.faces[i]))
+                if (seenVertices.insert(u).second) {
+                    vertices.push_back(u);
+                    if (ring < inner) region.inner.insert(u);
+                }
     }
-    std::sort(faces.begin(), faces.end());
-    return faces;
+    std::sort(region.faces.begin(), region.faces.end());
+    return region;
 }
 
 }  // namespace
 
-// Breadth first over the region's faces; each face is entered at a known corner (the start face
-// at v, a neighbour at the end of the edge it was reached across), and its corners and edges
-// are read counter-clockwise from there, so the labels depend on the faces only.
+// Breadth first over the faces of rings + 1 face rings; each face is entered at a known corner
+// (the start face at v, a neighbour at the end of the edge it was reached across), and its
+// corners and edges are read counter-clockwise from there, so the labels depend on the faces
+// only. The signature numbers every vertex met; `vertices` keeps those of the first `rings`.
 Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int rings) {
-    const std::vector<int> region = ringFaces(t, v, rings);
-    auto inRegion = [&](int f) { return std::binary_search(region.begin(), region.end(), f); };
+    const Region region = ringFaces(t, v, rings + 1, rings);
+    auto inRegion = [&](int f) { return std::binary_search(region.faces.begin(), region.faces.end(), f); };
     Neighbourhood n;
     std::unordered_map<int, int> labels;
     auto label = [&](int u) {
-        const auto [it, added] = labels.emplace(u, int(n.vertices.size()));
+        const auto [it, added] = labels.emplace(u, int(labels.size()));
         if (added) {
-            n.vertices.push_back(u);
+            if (region.inner.count(u)) n.vertices.push_back(u);
             n.signature.push_back(sharpnessClass(t.vertSharpness[u]));
         }
         return it->second;

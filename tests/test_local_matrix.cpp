@@ -68,7 +68,7 @@ Eigen::MatrixXd matrixOnMesh(const std::string& ring, Scheme scheme, int L, int 
     const auto fanChild = fanOf(child, vChild, o);
     const Neighbourhood n = gatherNeighbourhood(t, v, fan->faces[0], rings);
     const Neighbourhood nc = gatherNeighbourhood(child, vChild, fanChild->faces[0], rings);
-    *settled = gatherNeighbourhood(t, v, fan->faces[0], rings + 1).signature == signature;
+    *settled = n.signature == signature;
     const int size = int(n.vertices.size());
     Eigen::MatrixXd S = Eigen::MatrixXd::Zero(size, size);
     if (int(nc.vertices.size()) != size) return S;

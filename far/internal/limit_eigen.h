@@ -28,7 +28,7 @@ enum class TangentSource {
 struct LocalLimitMask {
     std::vector<double> position, du, dv;
     int rings = 0;               // the neighbourhood is this many face rings; 0: none is closed
-    std::vector<int> signature;  // of the configuration's mesh, rings + 1 face rings deep
+    std::vector<int> signature;  // gatherNeighbourhood's on the configuration's mesh
     TangentSource tangents = TangentSource::Eigen;
     bool exactPosition = true;   // false: eigenvalue 1 is not simple; the position is the vertex's own
     double lambda1 = 0, lambda2 = 0, lambda3 = 0, imaginary = 0;  // moduli; |Im| of the pair

@@ -48,11 +48,12 @@ std::optional<VertexFan> fanOf(const Topology& topology, int vertex, const Optio
 
 // The vertices of `rings` face rings around `vertex` (ring 1: the corners of its faces; ring
 // j + 1: the corners of every face touching ring j), labelled by an oriented walk over the faces
-// from `startFace` (docs/limit_eigen.md, "Ring-relative order"): two meshes that agree on these
-// faces give their vertices the same labels. `signature` lists what the walk saw (face sizes,
-// labels of corners, edge sharpness classes and face counts), equal exactly when they agree.
+// of one ring more, from `startFace` (docs/limit_eigen.md, "Ring-relative order"): two meshes
+// that agree on those faces give their vertices the same labels. `signature` lists what the walk
+// saw (face sizes, labels of corners, edge sharpness classes and face counts), equal exactly when
+// they agree on them.
 struct Neighbourhood {
-    std::vector<int> vertices;  // by label; vertices[0] is `vertex`
+    std::vector<int> vertices;  // the first `rings` rings, in label order; vertices[0] is `vertex`
     std::vector<int> signature;
 };
 Neighbourhood gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings);
@@ -64,7 +65,7 @@ struct LocalMatrix {
     int size = 0;               // |N|
     std::vector<double> S;      // size x size, row-major
     std::vector<double> layout; // 2 per element: N laid out in the plane, sectors counter-clockwise
-    std::vector<int> signature; // of the configuration mesh, `rings` + 1 face rings deep
+    std::vector<int> signature; // gatherNeighbourhood's, on the configuration mesh
 };
 
 // S of a configuration, growing N one ring at a time (up to kMaxLocalRings) until no child row
