@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tests/limit_support.h"
@@ -293,6 +295,25 @@ TEST(LimitStencils, SameTableOnAnyNumberOfThreads) {
     EXPECT_EQ(serial.indices, parallel.indices);
     EXPECT_EQ(serial.weightOffsets, parallel.weightOffsets);
     EXPECT_EQ(serial.weights, parallel.weights);
+}
+
+// Several threads may ask one Refiner for limit tables at once, a faces-only level included.
+TEST(LimitStencils, ConcurrentReadersGetTheSameTable) {
+    Options options;
+    options.scheme = Scheme::CatmullClark;
+    const io::ObjMesh obj = io::readObj(meshPath("osd/catmark_torus_creases0.obj"));
+    Refiner refiner(obj.descriptor(), obj.applyTags(options));
+    refiner.refineUniform(3);
+    const LimitStencilTable reference = refiner.limitStencils(3);
+    std::vector<LimitStencilTable> tables(4);
+    std::vector<std::thread> threads;
+    for (auto& table : tables) threads.emplace_back([&] { table = refiner.limitStencils(3); });
+    for (auto& thread : threads) thread.join();
+    for (const LimitStencilTable& table : tables) {
+        EXPECT_EQ(table.indices, reference.indices);
+        EXPECT_EQ(table.weightOffsets, reference.weightOffsets);
+        EXPECT_EQ(table.weights, reference.weights);
+    }
 }
 
 // Identical masks share their weights: on the torus, where every vertex is regular, the whole
