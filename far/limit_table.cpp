@@ -72,15 +72,12 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
         }
     });
     LimitStencilTableD table;
-    table.numSourceVertices = n;
     if (parts == 1) {
-        table.sizes = std::move(built[0].sizes);
-        table.offsets = std::move(built[0].offsets);
-        table.indices = std::move(built[0].indices);
-        table.weights = std::move(built[0].weights);
+        table = std::move(built[0]);
     } else {
         for (const LimitStencilTableD& part : built) append(part, table);
     }
+    table.numSourceVertices = n;
     return table;
 }
 
