@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,6 +39,10 @@ struct LimitCase {
     bool leftHanded = false;
     int firstLevel = 0;  // the mixed schemes start where every face is a quad (triangle)
 };
+
+void PrintTo(const LimitCase& c, std::ostream* os) {
+    *os << c.shape << " under " << toString(c.ours) << (c.leftHanded ? " (left-handed)" : "") << " from level " << c.firstLevel;
+}
 
 std::string caseName(const testing::TestParamInfo<LimitCase>& info) {
     return testNameOf(info.param.shape + "_" + toString(info.param.ours) + (info.param.leftHanded ? "_left" : ""));
