@@ -37,15 +37,18 @@ struct LimitCase {
     OsdScheme reference = OsdScheme::Catmark;
     Scheme ours = Scheme::CatmullClark;
     bool leftHanded = false;
+    bool smoothTriangles = false;  // catmull-clark's smooth-triangle rule, against TRI_SUB_SMOOTH
     int firstLevel = 0;  // the mixed schemes start where every face is a quad (triangle)
 };
 
 void PrintTo(const LimitCase& c, std::ostream* os) {
-    *os << c.shape << " under " << toString(c.ours) << (c.leftHanded ? " (left-handed)" : "") << " from level " << c.firstLevel;
+    *os << c.shape << " under " << toString(c.ours) << (c.leftHanded ? " (left-handed)" : "")
+        << (c.smoothTriangles ? " (smooth triangles)" : "") << " from level " << c.firstLevel;
 }
 
 std::string caseName(const testing::TestParamInfo<LimitCase>& info) {
-    return testNameOf(info.param.shape + "_" + toString(info.param.ours) + (info.param.leftHanded ? "_left" : ""));
+    return testNameOf(info.param.shape + "_" + toString(info.param.ours) + (info.param.leftHanded ? "_left" : "") +
+                      (info.param.smoothTriangles ? "_smooth_triangles" : ""));
 }
 
 bool startsWith(const std::string& s, const std::string& prefix) { return s.compare(0, prefix.size(), prefix) == 0; }
@@ -78,6 +81,11 @@ std::vector<LimitCase> limitCases() {
             // Without triangles every scheme is Catmull-Clark; n-gons make level 0 mixed.
             bool noTriangles = !collapsed;
             for (int size : mesh.faceSizes) noTriangles = noTriangles && size != 3;
+            if (!noTriangles) {  // the smooth-triangle rule changes level 1 on
+                c.smoothTriangles = true;
+                cases.push_back(c);
+                c.smoothTriangles = false;
+            }
             c.firstLevel = quads ? 0 : 1;
             if (noTriangles)
                 for (Scheme s : {Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly}) {
@@ -199,11 +207,12 @@ TEST_P(LimitAgainstOsd, MasksEqualOpenSubdiv) {
     Options base;
     base.scheme = c.ours;
     base.leftHanded = c.leftHanded;
+    base.smoothTriangles = c.smoothTriangles;
     const RefinedMesh ours = refineMesh("osd/" + c.shape + ".obj", kMaxLevel, base);
     const double diagonal = boundingBoxDiagonal(ours.mesh.positions);
     for (int L = c.firstLevel; L <= kMaxLevel; ++L) {
         const OsdLimit osd = osdLimit(ours.mesh, c.reference, ours.options.boundary, ours.options.creaseMethod, L,
-                                      false, c.leftHanded);
+                                      ours.options.smoothTriangles, c.leftHanded);
         const ExactLevel exact = exactLimit(*ours.refiner, ours.mesh.positions, L);
         const Worst worst = compare(exact.refined, exact.limit, osd, diagonal);
         EXPECT_LE(worst.position, kPositionTolerance) << "level " << L << ": limit position of vertex " << worst.positionVertex;
@@ -222,11 +231,12 @@ TEST_P(LimitAgainstOsd, FloatTablesAgreeWithOpenSubdiv) {
     Options base;
     base.scheme = c.ours;
     base.leftHanded = c.leftHanded;
+    base.smoothTriangles = c.smoothTriangles;
     const RefinedMesh ours = refineMesh("osd/" + c.shape + ".obj", kMaxLevel, base);
     const double diagonal = boundingBoxDiagonal(ours.mesh.positions);
     for (int L = c.firstLevel; L <= kMaxLevel; ++L) {
         const OsdLimit osd = osdLimit(ours.mesh, c.reference, ours.options.boundary, ours.options.creaseMethod, L,
-                                      false, c.leftHanded);
+                                      ours.options.smoothTriangles, c.leftHanded);
         const LimitStencilTable table = ours.refiner->limitStencils(L);
         ASSERT_EQ(table.numStencils(), int(ours.positions[L].size() / 3)) << "level " << L;
         const Worst worst = compare(ours.positions[L], applyLimit(table, ours.positions[L]), osd, diagonal);
