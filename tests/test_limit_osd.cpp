@@ -191,12 +191,12 @@ ExactLevel exactLimit(const Refiner& refiner, const std::vector<float>& control,
 }
 
 // The worst errors of a level, in the test's XML report (--gtest_output=xml).
-void recordWorst(int L, const Worst& worst) {
+void recordWorst(int L, const Worst& worst, const std::string& suffix = "") {
     char position[32], angle[32];
     std::snprintf(position, sizeof position, "%.3g", worst.position);
     std::snprintf(angle, sizeof angle, "%.3g", worst.angle);
-    testing::Test::RecordProperty("level" + std::to_string(L) + "_position", position);
-    testing::Test::RecordProperty("level" + std::to_string(L) + "_angle", angle);
+    testing::Test::RecordProperty("level" + std::to_string(L) + suffix + "_position", position);
+    testing::Test::RecordProperty("level" + std::to_string(L) + suffix + "_angle", angle);
 }
 
 class LimitAgainstOsd : public testing::TestWithParam<LimitCase> {};
@@ -222,10 +222,11 @@ TEST_P(LimitAgainstOsd, MasksEqualOpenSubdiv) {
     }
 }
 
-// What an engine gets: the float LimitStencilTable applied to the float refined positions. Float
-// data carries an absolute error of about 1e-7 of the coordinates, which the tangents (differences
-// of neighbours a refined edge apart) turn into an angle of up to a few 1e-4 at level 3 of the
-// larger shapes; the normals are held to kFloatNormalTolerance.
+// What an engine gets, through the float tables. Per level: limitStencils(L) on the float refined
+// positions of level L, whose own rounding (about 1e-7 of the coordinates) the tangents, differences
+// of neighbours a refined edge apart, turn into up to a few 1e-4 rad at level 3 of the larger
+// shapes: normals held to kFloatNormalTolerance. Factorized: factorizedLimitStencils(L) on the
+// control positions, which are exact: normals within kNormalTolerance.
 TEST_P(LimitAgainstOsd, FloatTablesAgreeWithOpenSubdiv) {
     const LimitCase& c = GetParam();
     Options base;
@@ -239,11 +240,18 @@ TEST_P(LimitAgainstOsd, FloatTablesAgreeWithOpenSubdiv) {
                                       ours.options.smoothTriangles, c.leftHanded);
         const LimitStencilTable table = ours.refiner->limitStencils(L);
         ASSERT_EQ(table.numStencils(), int(ours.positions[L].size() / 3)) << "level " << L;
-        const Worst worst = compare(ours.positions[L], applyLimit(table, ours.positions[L]), osd, diagonal);
-        EXPECT_LE(worst.position, kPositionTolerance) << "level " << L << ": limit position of vertex " << worst.positionVertex;
-        EXPECT_LE(worst.angle, kFloatNormalTolerance)
-            << "level " << L << ": normal of vertex " << worst.angleVertex << ", " << worst.compared << " compared";
-        recordWorst(L, worst);
+        const Worst perLevel = compare(ours.positions[L], applyLimit(table, ours.positions[L]), osd, diagonal);
+        EXPECT_LE(perLevel.position, kPositionTolerance) << "level " << L << ": limit position of vertex " << perLevel.positionVertex;
+        EXPECT_LE(perLevel.angle, kFloatNormalTolerance)
+            << "level " << L << ": normal of vertex " << perLevel.angleVertex << ", " << perLevel.compared << " compared";
+        const LimitStencilTable factorized = ours.refiner->factorizedLimitStencils(L);
+        const Worst fromControl = compare(ours.positions[L], applyLimit(factorized, ours.mesh.positions), osd, diagonal);
+        EXPECT_LE(fromControl.position, kPositionTolerance)
+            << "level " << L << " factorized: limit position of vertex " << fromControl.positionVertex;
+        EXPECT_LE(fromControl.angle, kNormalTolerance)
+            << "level " << L << " factorized: normal of vertex " << fromControl.angleVertex << ", " << fromControl.compared << " compared";
+        recordWorst(L, perLevel);
+        recordWorst(L, fromControl, "_factorized");
     }
 }
 
