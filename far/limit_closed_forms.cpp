@@ -25,43 +25,51 @@ CreaseEnds creaseEnds(const VertexRing& ring) {
     return ends;
 }
 
-// Weights per ring slot: the vertex, each edge neighbour, each face's opposite corner; then
-// written into the mask in that order (merging vertices that appear twice).
+// The weights of one mask by ring slot, written straight into the mask: the vertex, edge
+// neighbour i, face i's opposite corner (LimitMask::startRing's layout).
 struct RingWeights {
-    double vertex[3] = {0, 0, 0};
-    std::vector<double> edge[3], face[3];  // per output (position, dU, dV), per ring slot
+    double* edge[3];  // per output (position, dU, dV), per ring edge
+    double* face[3];  // per output, per ring face
+    double& vertex(int k) { return (*channels_[k])[0]; }
 
-    explicit RingWeights(const VertexRing& ring) {
+    RingWeights(const VertexRing& ring, LimitMask& out) : channels_{&out.position, &out.du, &out.dv} {
+        out.startRing(ring);
         for (int k = 0; k < 3; ++k) {
-            edge[k].assign(ring.edges.size(), 0.0);
-            face[k].assign(ring.faces.size(), 0.0);
+            edge[k] = channels_[k]->data() + 1;
+            face[k] = edge[k] + ring.edges.size();
         }
     }
-    void writeTo(const VertexRing& ring, LimitMask& out) const {
-        out.add(ring.vertex, vertex[0], vertex[1], vertex[2]);
-        for (std::size_t i = 0; i < ring.edges.size(); ++i)
-            out.add(ring.neighbours[i], edge[0][i], edge[1][i], edge[2][i]);
-        for (std::size_t i = 0; i < ring.faces.size(); ++i)
-            if (face[0][i] != 0.0 || face[1][i] != 0.0 || face[2][i] != 0.0)
-                out.add(ring.opposite[i], face[0][i], face[1][i], face[2][i]);
-    }
+
+private:
+    std::vector<double>* channels_[3];
 };
 
 constexpr int kPosition = 0, kU = 1, kV = 2;
 
+// cos and sin of i/n of a turn, exact where the angle is a multiple of 30 degrees (the regular
+// valences' masks then hold exact zeros and halves, as their tabulated forms do).
+double cosTurn(int i, int n) {
+    static const double kTwelfths[12] = {1.0, 0.5 * std::sqrt(3.0), 0.5, 0.0, -0.5, -0.5 * std::sqrt(3.0),
+                                         -1.0, -0.5 * std::sqrt(3.0), -0.5, 0.0, 0.5, 0.5 * std::sqrt(3.0)};
+    i = (i % n + n) % n;
+    if ((12 * i) % n == 0) return kTwelfths[12 * i / n];
+    return std::cos(2.0 * M_PI * i / n);
+}
+double sinTurn(int i, int n) { return cosTurn(4 * i - n, 4 * n); }  // sin x = cos(x - quarter turn)
+
 // A corner: the vertex itself; the tangents along its first two edges (the first face's sides),
 // scaled by `scale`.
 void cornerMasks(const VertexRing& ring, double scale, RingWeights& w) {
-    w.vertex[kPosition] = 1.0;
+    w.vertex(kPosition) = 1.0;
     if (ring.edges.size() < 2) return;  // an isolated vertex: no tangent
-    w.vertex[kU] = w.vertex[kV] = -scale;
+    w.vertex(kU) = w.vertex(kV) = -scale;
     w.edge[kU][0] = scale;
     w.edge[kV][1] = scale;
 }
 
 // The crease's limit point: the cubic B-spline of its crease curve, (1, 4, 1)/6.
 void creasePosition(const CreaseEnds& ends, RingWeights& w) {
-    w.vertex[kPosition] = 4.0 / 6.0;
+    w.vertex(kPosition) = 4.0 / 6.0;
     w.edge[kPosition][ends.first] += 1.0 / 6.0;
     w.edge[kPosition][ends.last] += 1.0 / 6.0;
 }
@@ -69,16 +77,16 @@ void creasePosition(const CreaseEnds& ends, RingWeights& w) {
 void catmullClarkSmooth(const VertexRing& ring, RingWeights& w) {
     const int n = int(ring.faces.size());
     const double f = 1.0 / (n * (n + 5.0)), e = 4.0 * f;
-    w.vertex[kPosition] = 1.0 - n * (e + f);
-    const double theta = 2.0 * M_PI / n, cosTheta = std::cos(theta);
-    const double lambda = 5.0 / 16.0 + (cosTheta + std::cos(theta / 2) * std::sqrt(2.0 * (9.0 + cosTheta))) / 16.0;
+    w.vertex(kPosition) = 1.0 - n * (e + f);
+    const double cosTheta = cosTurn(1, n);
+    const double lambda = 5.0 / 16.0 + (cosTheta + cosTurn(1, 2 * n) * std::sqrt(2.0 * (9.0 + cosTheta))) / 16.0;
     const double faceScale = 1.0 / (4.0 * lambda - 1.0);
     for (int i = 0; i < n; ++i) {
         w.edge[kPosition][i] = e;
         w.face[kPosition][i] = f;
         // dV is dU turned by one slot, a quarter turn at the regular valence.
         const int next = (i + 1) % n;
-        const double ci = std::cos(i * theta), ci1 = std::cos((i + 1) * theta);
+        const double ci = cosTurn(i, n), ci1 = cosTurn(i + 1, n);
         w.edge[kU][i] = 4.0 * ci;
         w.face[kU][i] = faceScale * (ci + ci1);
         w.edge[kV][next] = 4.0 * ci;
@@ -97,11 +105,11 @@ void catmullClarkCrease(const VertexRing& ring, RingWeights& w) {
     auto& edge = w.edge[kV];
     auto& face = w.face[kV];
     if (interior == 0) {  // one face: the mean of the crease's two edges
-        w.vertex[kV] = -6.0;
+        w.vertex(kV) = -6.0;
         edge[ends.first] += 3.0;
         edge[ends.last] += 3.0;
     } else if (interior == 1) {
-        w.vertex[kV] = -4.0 / 6.0;
+        w.vertex(kV) = -4.0 / 6.0;
         edge[ends.first] = -1.0 / 6.0;
         edge[ends.first + 1] = 4.0 / 6.0;
         edge[ends.last] = -1.0 / 6.0;
@@ -109,15 +117,15 @@ void catmullClarkCrease(const VertexRing& ring, RingWeights& w) {
         face[ends.first + 1] = 1.0 / 6.0;
     } else {
         const int k = interior + 1;
-        const double theta = M_PI / k, cosTheta = std::cos(theta), sinTheta = std::sin(theta);
+        const double cosTheta = cosTurn(1, 2 * k), sinTheta = sinTurn(1, 2 * k);  // θ = π/k
         const double d = 1.0 / (k * (3.0 + cosTheta)), r = (cosTheta + 1.0) / sinTheta;
-        w.vertex[kV] = 4.0 * r * (cosTheta - 1.0) * d;
+        w.vertex(kV) = 4.0 * r * (cosTheta - 1.0) * d;
         edge[ends.first] = -r * (1.0 + 2.0 * cosTheta) * d;
         edge[ends.last] = -r * (1.0 + 2.0 * cosTheta) * d;
         face[ends.first] = sinTheta * d;
         for (int i = 1; i < k; ++i) {
-            edge[ends.first + i] = 4.0 * std::sin(i * theta) * d;
-            face[ends.first + i] = (std::sin(i * theta) + std::sin((i + 1) * theta)) * d;
+            edge[ends.first + i] = 4.0 * sinTurn(i, 2 * k) * d;
+            face[ends.first + i] = (sinTurn(i, 2 * k) + sinTurn(i + 1, 2 * k)) * d;
         }
     }
 }
@@ -126,8 +134,8 @@ void catmullClarkCrease(const VertexRing& ring, RingWeights& w) {
 void loopSmoothTangents(const VertexRing& ring, RingWeights& w) {
     const int n = int(ring.edges.size());
     for (int i = 0; i < n; ++i) {
-        w.edge[kU][i] = std::cos(2.0 * M_PI * i / n);
-        w.edge[kV][i] = std::sin(2.0 * M_PI * i / n);
+        w.edge[kU][i] = cosTurn(i, n);
+        w.edge[kV][i] = sinTurn(i, n);
     }
 }
 
@@ -135,43 +143,42 @@ void loopSmooth(const VertexRing& ring, RingWeights& w) {
     const int n = int(ring.faces.size());
     double e = 1.0 / 12.0;
     if (n != 6) {
-        const double beta = 0.25 * std::cos(2.0 * M_PI / n) + 0.375;
+        const double beta = 0.25 * cosTurn(1, n) + 0.375;
         const double gamma = (0.625 - beta * beta) / n;
         e = 1.0 / (n + 3.0 / (8.0 * gamma));
     }
-    w.vertex[kPosition] = 1.0 - n * e;
+    w.vertex(kPosition) = 1.0 - n * e;
     for (std::size_t i = 0; i < ring.edges.size(); ++i) w.edge[kPosition][i] = e;
     loopSmoothTangents(ring, w);
 }
 
 // Loop's tangents at a crease: along it, (3/2)(first − last); across it, into the faces between
 // its first and last edge, scaled to match the interior tangents' lengths on a regular mesh.
-void loopCreaseTangents(const VertexRing& ring, const CreaseEnds& ends, RingWeights& w) {
+void loopCreaseTangents(const CreaseEnds& ends, RingWeights& w) {
     w.edge[kU][ends.first] = 1.5;
     w.edge[kU][ends.last] = -1.5;
     const int interior = ends.last - ends.first - 1;
     auto& edge = w.edge[kV];
     if (interior == 0) {
-        w.vertex[kV] = -6.0;
+        w.vertex(kV) = -6.0;
         edge[ends.first] += 3.0;
         edge[ends.last] += 3.0;
     } else if (interior == 1) {
-        w.vertex[kV] = -3.0;
+        w.vertex(kV) = -3.0;
         edge[ends.first + 1] = 3.0;
     } else if (interior == 2) {
         const double root3 = std::sqrt(3.0);
-        w.vertex[kV] = -root3;
+        w.vertex(kV) = -root3;
         edge[ends.first] = -root3 / 2;
         edge[ends.last] = -root3 / 2;
         edge[ends.first + 1] = root3;
         edge[ends.first + 2] = root3;
     } else {
-        const double theta = M_PI / (interior + 1);
-        edge[ends.first] = -3.0 * std::sin(theta);
-        edge[ends.last] = -3.0 * std::sin(theta);
-        for (int i = 1; i <= interior; ++i) edge[ends.first + i] = -6.0 * (std::cos(theta) - 1.0) * std::sin(i * theta);
+        const int k = 2 * (interior + 1);  // θ = π/(interior + 1): sin iθ = sinTurn(i, k)
+        edge[ends.first] = -3.0 * sinTurn(1, k);
+        edge[ends.last] = -3.0 * sinTurn(1, k);
+        for (int i = 1; i <= interior; ++i) edge[ends.first + i] = -6.0 * (cosTurn(1, k) - 1.0) * sinTurn(i, k);
     }
-    (void)ring;
 }
 
 bool hasRing(const VertexRing& ring) { return !ring.faces.empty() && ring.edges.size() >= 2; }
@@ -180,7 +187,7 @@ bool hasRing(const VertexRing& ring) { return !ring.faces.empty() && ring.edges.
 
 void catmullClarkLimit(const LimitVertex& vertex, LimitMask& out) {
     const VertexRing& ring = vertex.ring;
-    RingWeights w(ring);
+    RingWeights w(ring, out);
     const bool smooth = vertex.rule == VertexRule::Smooth || vertex.rule == VertexRule::Dart;
     if (!hasRing(ring) || vertex.rule == VertexRule::Corner || (smooth && ring.faces.size() == 2))
         cornerMasks(ring, 1.0, w);
@@ -190,12 +197,12 @@ void catmullClarkLimit(const LimitVertex& vertex, LimitMask& out) {
         cornerMasks(ring, 1.0, w);  // a smooth rule without a closed fan (non-manifold): stays put
     else
         catmullClarkCrease(ring, w);
-    w.writeTo(ring, out);
+    out.finishRing();
 }
 
 void loopLimit(const LimitVertex& vertex, LimitMask& out) {
     const VertexRing& ring = vertex.ring;
-    RingWeights w(ring);
+    RingWeights w(ring, out);
     const bool smooth = vertex.rule == VertexRule::Smooth || vertex.rule == VertexRule::Dart;
     if (!hasRing(ring) || vertex.rule == VertexRule::Corner || (smooth && ring.faces.size() != ring.edges.size())) {
         cornerMasks(ring, 3.0, w);
@@ -204,25 +211,25 @@ void loopLimit(const LimitVertex& vertex, LimitMask& out) {
     } else {
         const CreaseEnds ends = creaseEnds(ring);
         creasePosition(ends, w);
-        loopCreaseTangents(ring, ends, w);
+        loopCreaseTangents(ends, w);
     }
-    w.writeTo(ring, out);
+    out.finishRing();
 }
 
 void bilinearLimit(const LimitVertex& vertex, LimitMask& out) {
     const VertexRing& ring = vertex.ring;
-    RingWeights w(ring);
-    w.vertex[kPosition] = 1.0;
+    RingWeights w(ring, out);
+    w.vertex(kPosition) = 1.0;
     if (!hasRing(ring) || vertex.rule == VertexRule::Corner) {
         cornerMasks(ring, 1.0, w);
     } else if (vertex.rule == VertexRule::Crease) {
-        loopCreaseTangents(ring, creaseEnds(ring), w);
+        loopCreaseTangents(creaseEnds(ring), w);
     } else if (ring.faces.size() == ring.edges.size()) {
         loopSmoothTangents(ring, w);
     } else {
         cornerMasks(ring, 1.0, w);
     }
-    w.writeTo(ring, out);
+    out.finishRing();
 }
 
 bool ringFacesHave(const LimitVertex& vertex, int corners) {
