@@ -1,5 +1,6 @@
 #include <quadtri/osd/cpu_evaluator.h>
 
+#include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include "osd/internal/eval_arguments.h"
 
@@ -13,6 +14,15 @@ void CpuEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
         return;
     kernels::evalStencils(src + srcDesc.offset, srcDesc.stride, dst + dstDesc.offset, dstDesc.stride, dstDesc.length,
                           detail::stencilArrays(table), start, end);
+}
+
+void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const MeshNormalTable& table, int start, int end) {
+    if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
+                                          end))
+        return;
+    kernels::evalMeshNormals(src + srcDesc.offset, srcDesc.stride, dst + dstDesc.offset, dstDesc.stride,
+                             detail::meshNormalArrays(table), start, end);
 }
 
 }  // namespace v0

@@ -1,0 +1,111 @@
+// The limit loop, shared by the serial and threaded evaluators (and mirrored in GLSL by
+// shaders/limit_eval.comp): one pass over each stencil's support gathers the limit position and
+// both tangents, and the unit normal is their normalised cross product. Where the tangents are
+// degenerate (|dU x dV| <= kDegenerateSine |dU| |dV|, e.g. both along one straight boundary at a
+// corner) the normal is the level's area-weighted face normal at that vertex (kernels/
+// mesh_normal_kernel.h) when a MeshNormalTable is given, else (0, 0, 0); docs/limit_evaluation.md.
+#pragma once
+
+#include "kernels/mesh_normal_kernel.h"
+
+namespace quadtri {
+inline namespace v0 {
+namespace kernels {
+
+// Sine of the angle between the tangents below which they are taken as parallel: float rounding
+// of a tangent gathered from ~10-30 sources leaves errors of ~1e-6 of its length.
+constexpr float kDegenerateSine = 1e-4f;
+
+struct LimitStencilArrays {
+    const int* offsets;  // numStencils + 1: the shared support of stencil i is [offsets[i], offsets[i+1])
+    const int* indices;
+    // Where stencil i's position, dU and dV weights start in `weights`: weightOffsets[k][i * step].
+    const int* weightOffsets[3];
+    int step;
+    const float* weights;
+};
+
+// One output: element i at data + i * stride (data == nullptr: not written).
+struct LimitOutput {
+    float* data;
+    int stride;
+};
+
+struct LimitOutputs {
+    LimitOutput position, du, dv, normal;
+    const MeshNormalArrays* fallback;  // may be null
+};
+
+inline void storeIfWanted(const LimitOutput& out, int i, const float* value, int width) {
+    if (!out.data) return;
+    float* d = out.data + static_cast<long>(i) * out.stride;
+    for (int c = 0; c < width; ++c) d[c] = value[c];
+}
+
+// The normal of stencil i from its tangents (width 3).
+inline void limitNormal(const float* src, int srcStride, const float u[3], const float v[3], const LimitOutputs& o,
+                        int i) {
+    const float n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const float n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    const float u2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    const float v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    float* d = o.normal.data + static_cast<long>(i) * o.normal.stride;
+    if (n2 > kDegenerateSine * kDegenerateSine * u2 * v2) {
+        normalizeInto(n, 1.0f, d);
+    } else if (o.fallback) {
+        meshNormal(src, srcStride, *o.fallback, i, d);
+    } else {
+        d[0] = d[1] = d[2] = 0.0f;
+    }
+}
+
+// Components [0, Width) of stencils [start, end); src and the outputs point at component 0 of
+// element 0. The normal is written only by the width-3 instantiation.
+template <int Width>
+inline void evalLimitFixed(const float* src, int srcStride, const LimitStencilArrays& t, const LimitOutputs& o,
+                           int start, int end) {
+    for (int i = start; i < end; ++i) {
+        float p[Width] = {}, u[Width] = {}, v[Width] = {};
+        const int first = t.offsets[i], n = t.offsets[i + 1] - first;
+        const int* idx = t.indices + first;
+        const float* wp = t.weights + t.weightOffsets[0][static_cast<long>(i) * t.step];
+        const float* wu = t.weights + t.weightOffsets[1][static_cast<long>(i) * t.step];
+        const float* wv = t.weights + t.weightOffsets[2][static_cast<long>(i) * t.step];
+        for (int k = 0; k < n; ++k) {
+            const float* s = src + static_cast<long>(idx[k]) * srcStride;
+            for (int c = 0; c < Width; ++c) {
+                p[c] += wp[k] * s[c];
+                u[c] += wu[k] * s[c];
+                v[c] += wv[k] * s[c];
+            }
+        }
+        storeIfWanted(o.position, i, p, Width);
+        storeIfWanted(o.du, i, u, Width);
+        storeIfWanted(o.dv, i, v, Width);
+        if constexpr (Width == 3) {
+            if (o.normal.data) limitNormal(src, srcStride, u, v, o, i);
+        }
+    }
+}
+
+inline LimitOutput shifted(const LimitOutput& out, int by) { return {out.data ? out.data + by : nullptr, out.stride}; }
+
+// Any width: widths 1-4 in one pass; wider data in passes of 4 components (each component is
+// independent, so the result is the same as one pass). Normals need width 3.
+inline void evalLimitStencils(const float* src, int srcStride, int width, const LimitStencilArrays& t,
+                              const LimitOutputs& o, int start, int end) {
+    switch (width) {
+    case 1: evalLimitFixed<1>(src, srcStride, t, o, start, end); return;
+    case 2: evalLimitFixed<2>(src, srcStride, t, o, start, end); return;
+    case 3: evalLimitFixed<3>(src, srcStride, t, o, start, end); return;
+    case 4: evalLimitFixed<4>(src, srcStride, t, o, start, end); return;
+    default: break;
+    }
+    const LimitOutputs rest{shifted(o.position, 4), shifted(o.du, 4), shifted(o.dv, 4), {nullptr, 0}, nullptr};
+    evalLimitFixed<4>(src, srcStride, t, o, start, end);
+    evalLimitStencils(src + 4, srcStride, width - 4, t, rest, start, end);
+}
+
+}  // namespace kernels
+}  // namespace v0
+}  // namespace quadtri
