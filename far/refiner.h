@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <quadtri/far/level_faces.h>
+#include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/options.h>
 #include <quadtri/far/stencil_table.h>
 #include <quadtri/far/topology.h>
@@ -54,6 +55,20 @@ public:
     // what the Refiner holds, would pass options.memoryBudgetBytes (counting the double tables
     // being composed, the float table and a 3-float output for it), before that allocation.
     StencilTable factorizedStencils(int L) const;
+
+    // Limit stencils of level L's vertices (0 <= L <= maxLevel()) over level L's vertices: apply
+    // them to what the per-level tables (or the control data, at L = 0) produced. One stencil per
+    // vertex of level L, in its vertex order: the limit position and two tangents
+    // (LimitStencilTable, docs/limit.md). A level built with its faces only is completed for the
+    // call and let go after it (the Refiner itself does not change; its bytes are counted in the
+    // budget). Throws TopologyError for a level out of range, MemoryBudgetError when the table
+    // and a 3-float output for it, with what the Refiner holds, would pass the budget.
+    LimitStencilTable limitStencils(int L) const;
+
+    // The same stencils over the control (level 0) vertices: limitStencils(L) composed with the
+    // per-level tables, in double precision, rounded once. The budget is kept as in
+    // factorizedStencils (the double tables being composed, the float table, a 3-float output).
+    LimitStencilTable factorizedLimitStencils(int L) const;
 
     // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L
     // (a looser bound while level L-1 holds its faces only).

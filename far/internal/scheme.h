@@ -13,6 +13,8 @@
 
 #include "far/internal/crease.h"
 #include "far/internal/face_loops.h"
+#include "far/internal/limit_eigen.h"
+#include "far/internal/limit_mask.h"
 #include <quadtri/far/options.h>
 #include "far/internal/refine_topology.h"
 #include "far/internal/sparse_accumulator.h"
@@ -105,6 +107,14 @@ public:
     // (level_estimate.cpp): its prepared level, masks longer than the shared bound. `parent`
     // may hold its faces only (TopologyDetail::FacesOnly): estimate from the faces then.
     virtual std::size_t extraLevelBytes(const Topology& /*parent*/) const { return 0; }
+
+    // Appends to `out` (empty) the limit masks of one vertex of a level with full topology:
+    // position, dU and dV (docs/limit.md). The default is the generic eigen-analysis of the
+    // local subdivision matrix (limitFromLocalMatrix); schemes override it with closed forms
+    // where they have them (Catmull-Clark, Loop, and the mixed schemes at pure vertices).
+    virtual void limitMask(const LimitVertex& vertex, LimitMaskCache& cache, LimitMask& out) const {
+        limitFromLocalMatrix(*this, vertex, cache, out);
+    }
 };
 
 // The registry (schemes.cpp): the rules of a scheme, and every scheme in listing order.

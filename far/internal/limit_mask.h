@@ -1,0 +1,83 @@
+// What a scheme's limit masks read and write (docs/limit.md): one vertex of a level with its
+// neighbourhood in rotational order, and the three weight sets (position, dU, dV) over one support.
+#pragma once
+
+#include <vector>
+
+#include "far/internal/crease.h"
+#include <quadtri/far/options.h>
+#include <quadtri/far/topology.h>
+
+namespace quadtri {
+inline namespace v0 {
+
+// A vertex's faces and edges in rotational order, turning the way the faces' winding runs
+// (counter-clockwise seen from outside; Options::leftHanded reversed): face i lies between
+// edges[i] (the edge that leaves the vertex in face i's winding) and edges[i + 1] (the edge that
+// enters it; edges[0] again for an interior vertex).
+//   - interior manifold vertex: faces.size() == edges.size(); the first face is the first of
+//     Topology::facesOfVertex (the lowest face index), as OpenSubdiv starts;
+//   - boundary manifold vertex: edges.size() == faces.size() + 1, edges[0] and edges.back() the
+//     boundary edges;
+//   - non-manifold vertex (manifold == false): faces and edges in Topology's incidence order,
+//     with no rotational meaning.
+// neighbours[i] is edges[i]'s other end, opposite[i] face i's corner two after the vertex in the
+// face's own listing (the diagonal corner of a quad), the two vertex lists OpenSubdiv's limit masks
+// weigh.
+struct VertexRing {
+    int vertex = -1;
+    bool manifold = true;
+    bool boundary = false;
+    std::vector<int> faces;
+    std::vector<int> edges;
+    std::vector<int> neighbours;
+    std::vector<int> opposite;
+    std::vector<float> edgeSharpness;  // per edges[i], at this level
+};
+
+// Fills `ring` for vertex v of a level with full topology.
+void orderVertexRing(const Topology& level, int v, bool leftHanded, VertexRing& ring);
+
+// The rule a limit mask follows at a vertex of the level asked for: from the level's own
+// sharpness, a semi-sharp vertex or edge counting as sharp, as OpenSubdiv's Limit does
+// (docs/limit.md, "Semi-sharp features").
+VertexRule limitRule(const Topology& level, const VertexRing& ring);
+
+// Position, dU and dV weights over one support; add() merges a vertex that appears twice.
+class LimitMask {
+public:
+    void clear() {
+        indices.clear();
+        position.clear();
+        du.clear();
+        dv.clear();
+    }
+    void add(int vertex, double p, double u, double v) {
+        for (std::size_t k = 0; k < indices.size(); ++k)
+            if (indices[k] == vertex) {
+                position[k] += p;
+                du[k] += u;
+                dv[k] += v;
+                return;
+            }
+        indices.push_back(vertex);
+        position.push_back(p);
+        du.push_back(u);
+        dv.push_back(v);
+    }
+    int size() const { return int(indices.size()); }
+
+    std::vector<int> indices;
+    std::vector<double> position, du, dv;
+};
+
+// What a scheme's limit hook reads: the level, its options, the vertex's ordered ring and rule.
+struct LimitVertex {
+    const Topology& level;
+    const Options& options;
+    const VertexRing& ring;
+    VertexRule rule;
+};
+
+}  // namespace v0
+}  // namespace quadtri

@@ -1,0 +1,43 @@
+// Building limit stencil tables (docs/limit.md): one LimitMask per vertex of a level from the
+// scheme's hook (SchemeRules::limitMask), in double; composition over the control vertices; the
+// float table with pooled weight triples.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <quadtri/far/limit_stencil_table.h>
+#include <quadtri/far/options.h>
+#include <quadtri/far/topology.h>
+#include "far/internal/stencil_table_double.h"
+
+namespace quadtri {
+inline namespace v0 {
+
+// Plain CSR with three double weights per entry, interleaved (position, dU, dV), as
+// LimitStencilTable lays them out: stencil i's entries are [offsets[i], offsets[i] + sizes[i]),
+// entry k's weights at weights[3k .. 3k + 3).
+struct LimitStencilTableD {
+    int numSourceVertices = 0;
+    std::vector<int> sizes;
+    std::vector<int> offsets;
+    std::vector<int> indices;
+    std::vector<double> weights;
+    int numStencils() const { return int(sizes.size()); }
+};
+
+// The limit masks of every vertex of `level` (full topology) over its own vertices.
+LimitStencilTableD buildLimitStencils(const Topology& level, const Options& options);
+
+// limit ∘ inner: the limit stencils expanded over inner's sources. Throws std::length_error before
+// the result's arrays would pass `maxBytes`.
+LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
+                                        std::size_t maxBytes = ~std::size_t(0));
+
+// Rounded to float, each stencil's weight triples interned in the pool.
+LimitStencilTable toFloatTable(const LimitStencilTableD& table);
+
+std::size_t bytesOf(const LimitStencilTableD& table);
+
+}  // namespace v0
+}  // namespace quadtri
