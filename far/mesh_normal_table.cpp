@@ -3,10 +3,9 @@
 namespace quadtri {
 inline namespace v0 {
 
-MeshNormalTable buildMeshNormalTable(const LevelFaces& faces, bool leftHanded) {
+MeshNormalTable buildMeshNormalTable(const LevelFaces& faces) {
     MeshNormalTable t;
     t.numVertices = faces.numVertices();
-    t.leftHanded = leftHanded;
     // The drawn faces, renumbered (a level's faces are simple loops: no corner repeats).
     std::vector<int> counts(std::size_t(t.numVertices) + 1, 0);
     t.faceOffsets.reserve(std::size_t(faces.numFaces()) + 1);

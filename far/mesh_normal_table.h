@@ -1,7 +1,9 @@
 // What the MeshNormals evaluators read: for every vertex of one refined level, the faces around
 // it, so that each vertex gathers its own normal (no atomics, no second pass). The normal of
 // vertex v is the normalised sum of the vector areas of its faces (area-weighted face normals;
-// docs/limit_evaluation.md). Holes are left out, as they are not drawn.
+// docs/limit_evaluation.md). Holes are left out, as they are not drawn. The Refiner stores every
+// level's faces counter-clockwise (it reverses clockwise input under Options::leftHanded), so the
+// normals point to the outside of either kind of input.
 #pragma once
 
 #include <cstddef>
@@ -20,9 +22,6 @@ struct MeshNormalTable {
     // The level's non-hole faces: face f's corners are faceVerts[faceOffsets[f] .. faceOffsets[f+1]).
     std::vector<int> faceOffsets{0};
     std::vector<int> faceVerts;
-    // Faces listed clockwise (Options::leftHanded): the normals are negated so that they point
-    // to the same side as counter-clockwise faces' do.
-    bool leftHanded = false;
 
     int numFaces() const { return int(faceOffsets.size()) - 1; }
     std::size_t bytes() const {
@@ -30,8 +29,8 @@ struct MeshNormalTable {
     }
 };
 
-// The table of one level's faces (e.g. refiner.faces(L)), with the winding of Options::leftHanded.
-MeshNormalTable buildMeshNormalTable(const LevelFaces& faces, bool leftHanded);
+// The table of one level's faces (refiner.faces(L)).
+MeshNormalTable buildMeshNormalTable(const LevelFaces& faces);
 
 }  // namespace v0
 }  // namespace quadtri

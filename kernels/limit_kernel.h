@@ -16,12 +16,12 @@ namespace kernels {
 // of a tangent gathered from ~10-30 sources leaves errors of ~1e-6 of its length.
 constexpr float kDegenerateSine = 1e-4f;
 
+// LimitStencilTable's arrays: stencil i's support is indices[offsets[i] .. offsets[i+1]), entry
+// k's (position, dU, dV) weights are weights[weightOffsets[i] + 3k + 0, 1, 2].
 struct LimitStencilArrays {
-    const int* offsets;  // numStencils + 1: the shared support of stencil i is [offsets[i], offsets[i+1])
+    const int* offsets;  // numStencils + 1
     const int* indices;
-    // Where stencil i's position, dU and dV weights start in `weights`: weightOffsets[k][i * step].
-    const int* weightOffsets[3];
-    int step;
+    const int* weightOffsets;
     const float* weights;
 };
 
@@ -51,7 +51,7 @@ inline void limitNormal(const float* src, int srcStride, const float u[3], const
     const float v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
     float* d = o.normal.data + static_cast<long>(i) * o.normal.stride;
     if (n2 > kDegenerateSine * kDegenerateSine * u2 * v2) {
-        normalizeInto(n, 1.0f, d);
+        normalizeInto(n, d);
     } else if (o.fallback) {
         meshNormal(src, srcStride, *o.fallback, i, d);
     } else {
@@ -68,15 +68,14 @@ inline void evalLimitFixed(const float* src, int srcStride, const LimitStencilAr
         float p[Width] = {}, u[Width] = {}, v[Width] = {};
         const int first = t.offsets[i], n = t.offsets[i + 1] - first;
         const int* idx = t.indices + first;
-        const float* wp = t.weights + t.weightOffsets[0][static_cast<long>(i) * t.step];
-        const float* wu = t.weights + t.weightOffsets[1][static_cast<long>(i) * t.step];
-        const float* wv = t.weights + t.weightOffsets[2][static_cast<long>(i) * t.step];
-        for (int k = 0; k < n; ++k) {
+        const float* w = t.weights + t.weightOffsets[i];
+        for (int k = 0; k < n; ++k, w += 3) {
             const float* s = src + static_cast<long>(idx[k]) * srcStride;
+            const float wp = w[0], wu = w[1], wv = w[2];
             for (int c = 0; c < Width; ++c) {
-                p[c] += wp[k] * s[c];
-                u[c] += wu[k] * s[c];
-                v[c] += wv[k] * s[c];
+                p[c] += wp * s[c];
+                u[c] += wu * s[c];
+                v[c] += wv * s[c];
             }
         }
         storeIfWanted(o.position, i, p, Width);

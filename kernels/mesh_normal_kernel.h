@@ -15,7 +15,6 @@ struct MeshNormalArrays {
     const int* vertexFaces;
     const int* faceOffsets;
     const int* faceVerts;
-    float sign;  // +1, or -1 for clockwise faces
 };
 
 // Adds face f's doubled vector area to n.
@@ -35,10 +34,10 @@ inline void addFaceArea(const float* src, int stride, const MeshNormalArrays& t,
     }
 }
 
-// n scaled to unit length (times sign); (0, 0, 0) stays (0, 0, 0).
-inline void normalizeInto(const float n[3], float sign, float* d) {
+// n scaled to unit length; (0, 0, 0) stays (0, 0, 0).
+inline void normalizeInto(const float n[3], float* d) {
     const float len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    const float s = len2 > 0.0f ? sign / std::sqrt(len2) : 0.0f;
+    const float s = len2 > 0.0f ? 1.0f / std::sqrt(len2) : 0.0f;
     d[0] = n[0] * s, d[1] = n[1] * s, d[2] = n[2] * s;
 }
 
@@ -47,7 +46,7 @@ inline void normalizeInto(const float n[3], float sign, float* d) {
 inline void meshNormal(const float* src, int srcStride, const MeshNormalArrays& t, int v, float* d) {
     float n[3] = {0.0f, 0.0f, 0.0f};
     for (int k = t.vertexOffsets[v]; k < t.vertexOffsets[v + 1]; ++k) addFaceArea(src, srcStride, t, t.vertexFaces[k], n);
-    normalizeInto(n, t.sign, d);
+    normalizeInto(n, d);
 }
 
 // Vertices [start, end); src and dst point at element 0 (descriptor offsets applied).

@@ -85,6 +85,26 @@ bool checkLimitArguments(bool srcPresent, const BufferDescriptor& srcDesc, const
     return true;
 }
 
+bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                   const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc, float* dstDv,
+                   const BufferDescriptor& dvDesc, float* dstNormal, const BufferDescriptor& normalDesc,
+                   const LimitStencilTable& table, const MeshNormalTable* fallback, int start, int& end) {
+    if (!checkLimitArguments(src != nullptr, srcDesc, {dstPosition != nullptr, positionDesc},
+                                      {dstDu != nullptr, duDesc}, {dstDv != nullptr, dvDesc},
+                                      {dstNormal != nullptr, normalDesc}, table.numStencils(),
+                                      table.numSourceVertices, fallback ? fallback->numVertices : -1, start, end))
+        return false;
+    auto output = [](float* data, const BufferDescriptor& d) {
+        return kernels::LimitOutput{data ? data + d.offset : nullptr, data ? d.stride : 0};
+    };
+    call.src = src + srcDesc.offset;
+    call.arrays = limitArrays(table);
+    if (fallback) call.fallbackArrays = meshNormalArrays(*fallback);
+    call.outputs = {output(dstPosition, positionDesc), output(dstDu, duDesc), output(dstDv, dvDesc),
+                    output(dstNormal, normalDesc), fallback ? &call.fallbackArrays : nullptr};
+    return true;
+}
+
 }  // namespace detail
 }  // namespace v0
 }  // namespace quadtri

@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "kernels/limit_kernel.h"
 #include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include "osd/internal/eval_arguments.h"
@@ -57,6 +58,22 @@ void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
     // A vertex gathers ~4 faces of 3-4 corners: about the cost of a stencil, so the same grain.
     forBlocks(start, end, kGrain, [&](int b, int e) {
         kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, b, e);
+    });
+}
+
+void TbbEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                     const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc,
+                                     float* dstDv, const BufferDescriptor& dvDesc, float* dstNormal,
+                                     const BufferDescriptor& normalDesc, const LimitStencilTable& table,
+                                     const MeshNormalTable* fallback, int start, int end) {
+    detail::HostLimitCall c;
+    if (!detail::hostLimitCall(c, src, srcDesc, dstPosition, positionDesc, dstDu, duDesc, dstDv, dvDesc, dstNormal,
+                               normalDesc, table, fallback, start, end))
+        return;
+    // A limit stencil does three stencils' arithmetic over one support (plus a normal): half the
+    // stencil grain keeps a block's work above TBB's per-task cost with room to balance.
+    forBlocks(start, end, kGrain / 2, [&](int b, int e) {
+        kernels::evalLimitStencils(c.src, srcDesc.stride, srcDesc.length, c.arrays, c.outputs, b, e);
     });
 }
 

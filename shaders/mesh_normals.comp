@@ -7,7 +7,6 @@
 layout(local_size_x_id = 0) in;                   // workgroup size, default 64
 layout(constant_id = 1) const int SRC_STRIDE = 3;
 layout(constant_id = 2) const int DST_STRIDE = 3;
-layout(constant_id = 3) const float SIGN = 1.0;  // -1 for clockwise faces
 
 layout(std430, set = 0, binding = 0) readonly buffer VertexOffsets { int vertexOffsets[]; };
 layout(std430, set = 0, binding = 1) readonly buffer VertexFaces { int vertexFaces[]; };
@@ -44,7 +43,7 @@ void main() {
         }
     }
     const float len2 = dot(n, n);
-    n *= len2 > 0.0 ? SIGN * inversesqrt(len2) : 0.0;
+    n *= len2 > 0.0 ? inversesqrt(len2) : 0.0;
     const uint d = pc.dstOffset + v * uint(DST_STRIDE);
     dst[d] = n.x;
     dst[d + 1u] = n.y;

@@ -3,8 +3,10 @@
 // and reject exactly the same calls with the same messages.
 #pragma once
 
+#include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
+#include "kernels/limit_kernel.h"
 #include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include <quadtri/osd/buffer_descriptor.h>
@@ -45,15 +47,34 @@ bool checkLimitArguments(bool srcPresent, const BufferDescriptor& srcDesc, const
                          const LimitOutputArgument& normal, int numStencils, int numSources, int fallbackVertices,
                          int start, int& end);
 
+// The host evaluators' EvalLimitStencils arguments checked (checkLimitArguments) and turned into
+// what kernels::evalLimitStencils reads (outputs.fallback points into the struct itself, so it is
+// filled in place); returns false when the range is empty.
+struct HostLimitCall {
+    const float* src;
+    kernels::LimitStencilArrays arrays;
+    kernels::MeshNormalArrays fallbackArrays;
+    kernels::LimitOutputs outputs;
+};
+bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                   const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc, float* dstDv,
+                   const BufferDescriptor& dvDesc, float* dstNormal, const BufferDescriptor& normalDesc,
+                   const LimitStencilTable& table, const MeshNormalTable* fallback, int start, int& end);
+
 // The table's arrays as the kernel reads them.
 inline kernels::StencilArrays stencilArrays(const StencilTable& table) {
     return kernels::StencilArrays{table.offsets.data(), table.indices.data(), table.weightOffsets.data(),
                                   table.weights.data()};
 }
 
+inline kernels::LimitStencilArrays limitArrays(const LimitStencilTable& table) {
+    return kernels::LimitStencilArrays{table.offsets.data(), table.indices.data(), table.weightOffsets.data(),
+                                       table.weights.data()};
+}
+
 inline kernels::MeshNormalArrays meshNormalArrays(const MeshNormalTable& table) {
     return kernels::MeshNormalArrays{table.vertexOffsets.data(), table.vertexFaces.data(), table.faceOffsets.data(),
-                                     table.faceVerts.data(), table.leftHanded ? -1.0f : 1.0f};
+                                     table.faceVerts.data()};
 }
 
 }  // namespace detail
