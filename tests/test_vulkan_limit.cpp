@@ -132,6 +132,35 @@ TEST_F(VulkanTest, LimitFallbackMatchesCpu) {
     compareLimit(*ctx, eval, L.table, L.positions, kPacked, 3, all, nullptr, 0, -1, "corner level, no fallback");
 }
 
+// Recorded into the caller's command buffer, with all four outputs in one buffer at byte offsets
+// that need not meet minStorageBufferOffsetAlignment.
+TEST_F(VulkanTest, LimitRecordedIntoOneSharedBuffer) {
+    VulkanLimitEvaluator eval(*ctx);
+    const CornerLevel L = cornerLevel(2);
+    const int n = L.table.numStencils();
+    const VulkanLimitStencilTable table(*ctx, L.table);
+    const VulkanMeshNormalTable fallback(*ctx, L.meshNormals);
+    const VulkanVertexBuffer src = upload(*ctx, L.positions, 3);
+    const VulkanVertexBuffer all = upload(*ctx, std::vector<float>(std::size_t(12) * n + 16, kUntouched), 4);
+    const VkDeviceSize region = VkDeviceSize(3) * n * sizeof(float);
+    std::vector<float> expected(std::size_t(12) * n + 16, kUntouched);
+    float* out[4];
+    VulkanBufferRef refs[4];
+    for (int k = 0; k < 4; ++k) {
+        const VkDeviceSize at = sizeof(float) * (1 + k) + region * k;  // 4-byte aligned only
+        refs[k] = {all.buffer(), at};
+        out[k] = expected.data() + at / sizeof(float);
+    }
+    CpuEvaluator::EvalLimitStencils(L.positions.data(), kPacked, out[0], kPacked, out[1], kPacked, out[2], kPacked, out[3],
+                                    kPacked, L.table, &L.meshNormals);
+    ctx->submitAndWait([&](VkCommandBuffer cmd) {
+        eval.EvalLimitStencils(cmd, {src.buffer(), 0}, kPacked, refs[0], kPacked, refs[1], kPacked, refs[2], kPacked,
+                               refs[3], kPacked, table, &fallback);
+    });
+    eval.resetDescriptorSets();
+    expectClose(download(all, expected.size()), expected, "one shared buffer");
+}
+
 std::string messageOf(const std::function<void()>& call) {
     try {
         call();
