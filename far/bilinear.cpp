@@ -1,5 +1,6 @@
 // Bilinear subdivision: corners stay, edge points are midpoints, face points centroids.
 // Sharpness changes none of these masks, so every level is built as smooth.
+#include "far/internal/limit_closed_forms.h"
 #include "far/internal/scheme.h"
 
 namespace quadtri {
@@ -23,6 +24,9 @@ public:
         return "linear subdivision only: corners stay, edge midpoints, face centroids";
     }
     bool usesSharpness() const override { return false; }
+    void limitMask(const LimitVertex& vertex, LimitMaskCache&, LimitMask& out) const override {
+        bilinearLimit(vertex, out);
+    }
     std::unique_ptr<SchemeMasks> makeMasks(const Topology& parent, const Options&, const SchemeLevel*,
                                            SparseAccumulator& accumulator) const override {
         return std::make_unique<BilinearMasks>(parent, accumulator);

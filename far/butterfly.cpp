@@ -1,5 +1,6 @@
 // Surface rules of catmark-butterfly (see butterfly.h). Every weight below is either Butterfly's
 // or Zorin's, or was derived by docs/catmark_butterfly/derive_seam_rules.py.
+#include "far/internal/limit_closed_forms.h"
 #include "far/internal/butterfly.h"
 
 #include <algorithm>
@@ -326,6 +327,10 @@ public:
     std::unique_ptr<SchemeMasks> makeMasks(const Topology& parent, const Options&, const SchemeLevel*,
                                            SparseAccumulator& accumulator) const override {
         return std::make_unique<CatmarkButterflyMasks>(parent, accumulator);
+    }
+    // Catmull-Clark's closed form among quads only; triangles interpolate (the generic path).
+    void limitMask(const LimitVertex& vertex, LimitMaskCache& cache, LimitMask& out) const override {
+        if (!pureClosedForm(vertex, false, out)) limitFromLocalMatrix(*this, vertex, cache, out);
     }
     std::size_t extraLevelBytes(const Topology& parent) const override;
 };

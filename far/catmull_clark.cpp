@@ -6,6 +6,7 @@
 //   vertex point: (n − 2)/n v + 1/n² Σ neighbours + 1/n² Σ face points, n = incident faces.
 // Creases, corners and their blends are the shared rules (scheme.h, rules.cpp). A face with a
 // collapsed edge (`4 3 5 5`) is kept as it is, as OpenSubdiv keeps it.
+#include "far/internal/limit_closed_forms.h"
 #include "far/internal/scheme.h"
 
 namespace quadtri {
@@ -62,6 +63,10 @@ public:
     std::unique_ptr<SchemeMasks> makeMasks(const Topology& parent, const Options& options, const SchemeLevel*,
                                            SparseAccumulator& accumulator) const override {
         return std::make_unique<CatmullClarkMasks>(parent, accumulator, options.smoothTriangles);
+    }
+    // OpenSubdiv's closed forms everywhere, faces of any size included (docs/limit.md).
+    void limitMask(const LimitVertex& vertex, LimitMaskCache&, LimitMask& out) const override {
+        catmullClarkLimit(vertex, out);
     }
 };
 

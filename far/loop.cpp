@@ -6,6 +6,7 @@
 // Creases, corners and their blends are the shared rules (scheme.h, rules.cpp).
 #include <cmath>
 
+#include "far/internal/limit_closed_forms.h"
 #include "far/internal/scheme.h"
 
 namespace quadtri {
@@ -53,6 +54,7 @@ public:
                                            SparseAccumulator& accumulator) const override {
         return std::make_unique<LoopMasks>(parent, accumulator);
     }
+    void limitMask(const LimitVertex& vertex, LimitMaskCache&, LimitMask& out) const override { loopLimit(vertex, out); }
 };
 
 }  // namespace

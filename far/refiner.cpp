@@ -2,10 +2,13 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <tbb/parallel_invoke.h>
 
 #include "far/internal/level_estimate.h"
+#include "far/internal/limit_ring.h"
+#include "far/internal/limit_table.h"
 #include "far/internal/refine_topology.h"
 #include "far/internal/rules.h"
 #include "far/internal/scheme.h"
@@ -80,37 +83,128 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
     if (lastLevel == TopologyDetail::Full) completeLevel(maxLevel);
 }
 
+namespace {
+
+// What a composition may still allocate: the budget less what the Refiner holds, counting the
+// tables alive at each step; a refusal names `subject`.
+class CompositionBudget {
+public:
+    CompositionBudget(std::string subject, std::size_t held, std::size_t budget)
+        : subject_(std::move(subject)), held_(held), budget_(budget) {}
+    MemoryBudgetError refuse(std::size_t needed) const { return MemoryBudgetError(subject_, needed, held_, budget_); }
+    void reserve(std::size_t more) {
+        if (held_ > budget_ || used_ > budget_ - held_ || more > budget_ - held_ - used_)
+            throw refuse(held_ + used_ + more);
+        used_ += more;
+    }
+    void release(std::size_t less) { used_ -= less; }
+    std::size_t left() const { return budget_ - held_ - used_; }
+    std::size_t budget() const { return budget_; }
+
+private:
+    std::string subject_;
+    std::size_t held_, budget_, used_ = 0;  // used: bytes of the double tables alive at this point
+};
+
+// The per-level tables of levels 1..L composed in double, over the control vertices.
+StencilTableD composeLevels(const Refiner& refiner, int L, CompositionBudget& budget) {
+    budget.reserve(doubleBytes(refiner.levelStencils(1)));
+    StencilTableD composed = toDoubleTable(refiner.levelStencils(1));
+    for (int l = 2; l <= L; ++l) {
+        const StencilTable& table = refiner.levelStencils(l);
+        budget.reserve(doubleBytes(table));
+        const StencilTableD outer = toDoubleTable(table);
+        try {
+            StencilTableD next = composeStencils(outer, composed, budget.left());
+            budget.release(doubleBytes(table) + bytesOf(composed));
+            budget.reserve(bytesOf(next));
+            composed = std::move(next);
+        } catch (const std::length_error&) {
+            throw budget.refuse(budget.budget() + 1);  // composition stopped at the budget: more, by how much is unknown
+        }
+    }
+    return composed;
+}
+
+// Entries of the limit stencils of a level: at most the vertex, its edge neighbours and its
+// faces' opposite corners.
+std::size_t limitEntryBound(const Topology& t) { return t.numVertices + t.vertEdges.size() + t.vertFaces.size(); }
+
+// Bytes of a float limit table of n stencils and `entries` entries (a pool of at most three
+// floats per entry) and of a 3-float output per stencil.
+std::size_t floatLimitBytes(std::size_t n, std::size_t entries) {
+    return entries * (sizeof(int) + 3 * sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float));
+}
+
+// Level L's limit stencils in double, what they allocate reserved in `budget`. A faces-only
+// level is completed for this call only.
+LimitStencilTableD limitStencilsOf(const Refiner& refiner, int L, CompositionBudget& budget) {
+    const TriangleSplit split = rulesOf(refiner.options().scheme).triangleSplit();
+    Topology completed;
+    const Topology* topology = nullptr;
+    if (refiner.detail(L) == TopologyDetail::Full) {
+        topology = &refiner.level(L);
+    } else {
+        budget.reserve(refiner.estimateLevelBytes(L));
+        const Topology& parent = refiner.level(L - 1);
+        completed = refineTopology(parent, numberChildren(parent, split), refiner.options().creaseMethod,
+                                   TopologyDetail::Full);
+        topology = &completed;
+    }
+    RingStarts starts(refiner.level(0));
+    for (int l = 1; l <= L; ++l) {
+        const Topology& parent = refiner.level(l - 1);
+        starts.descend(parent, numberChildren(parent, split), l == L ? topology->numVertices : refiner.level(l).numVertices);
+    }
+    budget.reserve(limitEntryBound(*topology) * (sizeof(int) + 3 * sizeof(double)) +
+                   std::size_t(topology->numVertices) * 2 * sizeof(int));
+    return buildLimitStencils(*topology, refiner.options(), &starts);
+}
+
+}  // namespace
+
 StencilTable Refiner::factorizedStencils(int L) const {
     if (L < 1 || L > maxLevel())
         throw TopologyError("factorized stencils asked for level " + std::to_string(L) + "; refined levels are 1.." +
                             std::to_string(maxLevel()));
-    const std::size_t budget = options_.memoryBudgetBytes, held = bytes();
-    std::size_t used = 0;  // bytes of the double tables alive at this point
-    auto refuse = [&](std::size_t needed) {
-        return MemoryBudgetError("the factorized stencils of level " + std::to_string(L), needed, held, budget);
-    };
-    auto reserve = [&](std::size_t more) {
-        if (held > budget || used > budget - held || more > budget - held - used) throw refuse(held + used + more);
-        used += more;
-    };
-    reserve(doubleBytes(levelTables_[0]));
-    StencilTableD composed = toDoubleTable(levelTables_[0]);
-    for (int l = 2; l <= L; ++l) {
-        reserve(doubleBytes(levelTables_[l - 1]));
-        const StencilTableD outer = toDoubleTable(levelTables_[l - 1]);
-        try {
-            StencilTableD next = composeStencils(outer, composed, budget - held - used);
-            used -= doubleBytes(levelTables_[l - 1]);
-            used += bytesOf(next) - bytesOf(composed);
-            composed = std::move(next);
-        } catch (const std::length_error&) {
-            throw refuse(budget + 1);  // composition stopped at the budget: more, by how much is unknown
-        }
-    }
+    CompositionBudget budget("the factorized stencils of level " + std::to_string(L), bytes(),
+                             options_.memoryBudgetBytes);
+    const StencilTableD composed = composeLevels(*this, L, budget);
     // The float table (an index per entry, two ints per stencil, a weight pool of at most one
     // float per entry) and a 3-float output per stencil, while the double table still lives.
     const std::size_t n = composed.sizes.size(), entries = composed.indices.size();
-    reserve(entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float)));
+    budget.reserve(entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float)));
+    return toFloatTable(composed);
+}
+
+void Refiner::checkLimitLevel(int L) const {
+    if (L < 0 || L > maxLevel())
+        throw TopologyError("limit stencils asked for level " + std::to_string(L) + "; refined levels are 0.." +
+                            std::to_string(maxLevel()));
+}
+
+LimitStencilTable Refiner::limitStencils(int L) const {
+    checkLimitLevel(L);
+    CompositionBudget budget("the limit stencils of level " + std::to_string(L), bytes(), options_.memoryBudgetBytes);
+    const LimitStencilTableD table = limitStencilsOf(*this, L, budget);
+    budget.reserve(floatLimitBytes(table.sizes.size(), table.indices.size()));
+    return toFloatTable(table);
+}
+
+LimitStencilTable Refiner::factorizedLimitStencils(int L) const {
+    checkLimitLevel(L);
+    if (L == 0) return limitStencils(0);
+    CompositionBudget budget("the factorized limit stencils of level " + std::to_string(L), bytes(),
+                             options_.memoryBudgetBytes);
+    const LimitStencilTableD limit = limitStencilsOf(*this, L, budget);
+    const StencilTableD levels = composeLevels(*this, L, budget);
+    LimitStencilTableD composed;
+    try {
+        composed = composeLimitStencils(limit, levels, budget.left());
+    } catch (const std::length_error&) {
+        throw budget.refuse(budget.budget() + 1);
+    }
+    budget.reserve(bytesOf(composed) + floatLimitBytes(composed.sizes.size(), composed.indices.size()));
     return toFloatTable(composed);
 }
 

@@ -79,6 +79,7 @@ public:
 
 private:
     void completeLevel(int L);  // rebuilds a faces-only level in full
+    void checkLimitLevel(int L) const;
 
     Options options_;
     std::vector<TopologyDiagnostic> warnings_;

@@ -1,3 +1,4 @@
+#include "far/internal/limit_closed_forms.h"
 #include "far/internal/schaefer_warren.h"
 
 #include "far/internal/level_estimate.h"
@@ -139,6 +140,10 @@ public:
     std::unique_ptr<SchemeMasks> makeMasks(const Topology& parent, const Options&, const SchemeLevel* prepared,
                                            SparseAccumulator& accumulator) const override {
         return std::make_unique<SchaeferWarrenMasks>(parent, static_cast<const UnzippedLevel&>(*prepared), accumulator);
+    }
+    // Off the network its masks are Stam-Loop's: the closed forms where the neighbourhood is pure.
+    void limitMask(const LimitVertex& vertex, LimitMaskCache& cache, LimitMask& out) const override {
+        if (!pureClosedForm(vertex, true, out)) limitFromLocalMatrix(*this, vertex, cache, out);
     }
     // Each parent vertex's two copies: one entry per network neighbour (at most two per edge)
     // and the vertex itself, with an offset and a size each.

@@ -1,3 +1,4 @@
+#include "far/internal/limit_closed_forms.h"
 #include "far/internal/stam_loop.h"
 
 #include <array>
@@ -74,6 +75,10 @@ public:
     std::unique_ptr<SchemeMasks> makeMasks(const Topology& parent, const Options&, const SchemeLevel*,
                                            SparseAccumulator& accumulator) const override {
         return std::make_unique<StamLoopMasks>(parent, accumulator);
+    }
+    // Catmull-Clark's or Loop's closed form where the neighbourhood is pure (docs/limit.md).
+    void limitMask(const LimitVertex& vertex, LimitMaskCache& cache, LimitMask& out) const override {
+        if (!pureClosedForm(vertex, true, out)) limitFromLocalMatrix(*this, vertex, cache, out);
     }
 };
 

@@ -86,10 +86,13 @@ Sdc::Options::CreasingMethod sdcCreasing(CreaseMethod method) {
 
 }  // namespace
 
-OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
-                        CreaseMethod creaseMethod, int maxLevel, bool smoothTriangles) {
-    if (maxLevel < 0) throw std::invalid_argument("osdRefine: negative level");
+namespace {
 
+// OpenSubdiv's refiner of `mesh` (not yet refined): creases, corners and holes through the
+// Far::TopologyDescriptor, the Sdc options from the arguments.
+std::unique_ptr<Far::TopologyRefiner> createRefiner(const io::ObjMesh& mesh, OsdScheme scheme,
+                                                    BoundaryInterpolation boundary, CreaseMethod creaseMethod,
+                                                    bool smoothTriangles, bool leftHanded) {
     Sdc::Options sdcOptions;
     sdcOptions.SetVtxBoundaryInterpolation(sdcBoundary(boundary));
     sdcOptions.SetCreasingMethod(sdcCreasing(creaseMethod));
@@ -109,12 +112,23 @@ OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInter
     desc.cornerWeights = mesh.cornerSharpness.data();
     desc.numHoles = int(mesh.holes.size());
     desc.holeIndices = mesh.holes.data();
-    // Orientation does not change any vertex position, so isLeftHanded keeps its default.
+    desc.isLeftHanded = leftHanded;
 
     using Factory = Far::TopologyRefinerFactory<Descriptor>;
     std::unique_ptr<Far::TopologyRefiner> refiner(
         Factory::Create(desc, Factory::Options(sdcScheme(scheme), sdcOptions)));
     if (!refiner) throw std::runtime_error("OpenSubdiv refused the topology (see its error output)");
+    return refiner;
+}
+
+}  // namespace
+
+OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                        CreaseMethod creaseMethod, int maxLevel, bool smoothTriangles) {
+    if (maxLevel < 0) throw std::invalid_argument("osdRefine: negative level");
+    // Orientation does not change any vertex position, so isLeftHanded keeps its default.
+    std::unique_ptr<Far::TopologyRefiner> refiner =
+        createRefiner(mesh, scheme, boundary, creaseMethod, smoothTriangles, false);
 
     Far::TopologyRefiner::UniformOptions uniform(maxLevel);
     uniform.fullTopologyInLastLevel = true;
@@ -173,6 +187,64 @@ OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInter
             t.vertexNonManifold.push_back(level.IsVertexNonManifold(v) ? 1 : 0);
         }
         out.topology.push_back(std::move(t));
+    }
+    return out;
+}
+
+namespace {
+
+// Far::PrimvarRefinerReal<double>'s primvar: the limit reference is computed in double, so that
+// its own rounding stays well below what the limit tests compare.
+struct VertexD {
+    double p[3];
+    void Clear(void* = nullptr) { p[0] = p[1] = p[2] = 0.0; }
+    void AddWithWeight(const VertexD& src, double weight) {
+        p[0] += weight * src.p[0];
+        p[1] += weight * src.p[1];
+        p[2] += weight * src.p[2];
+    }
+};
+
+}  // namespace
+
+OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                  CreaseMethod creaseMethod, int level, bool smoothTriangles, bool leftHanded) {
+    if (level < 0) throw std::invalid_argument("osdLimit: negative level");
+    std::unique_ptr<Far::TopologyRefiner> refiner =
+        createRefiner(mesh, scheme, boundary, creaseMethod, smoothTriangles, leftHanded);
+    Far::TopologyRefiner::UniformOptions uniform(level);
+    uniform.fullTopologyInLastLevel = true;  // Limit needs the last level's incidences
+    refiner->RefineUniform(uniform);
+
+    std::vector<VertexD> current(mesh.numVertices());
+    for (int v = 0; v < mesh.numVertices(); ++v)
+        for (int c = 0; c < 3; ++c) current[v].p[c] = mesh.positions[3 * size_t(v) + c];
+    Far::PrimvarRefinerReal<double> primvar(*refiner);
+    for (int L = 1; L <= level; ++L) {
+        std::vector<VertexD> next(refiner->GetLevel(L).GetNumVertices());
+        const VertexD* src = current.data();
+        VertexD* dst = next.data();
+        primvar.Interpolate(L, src, dst);
+        current = std::move(next);
+    }
+    const size_t n = current.size();
+    std::vector<VertexD> position(n), du(n), dv(n);
+    const VertexD* src = current.data();
+    VertexD *dstPosition = position.data(), *dstDu = du.data(), *dstDv = dv.data();
+    primvar.Limit(src, dstPosition, dstDu, dstDv);
+
+    OsdLimit out;
+    const Far::TopologyLevel& last = refiner->GetLevel(level);
+    for (size_t v = 0; v < n; ++v)
+        for (int c = 0; c < 3; ++c) {
+            out.refined.push_back(float(current[v].p[c]));
+            out.position.push_back(position[v].p[c]);
+            out.du.push_back(du[v].p[c]);
+            out.dv.push_back(dv[v].p[c]);
+        }
+    for (int v = 0; v < last.GetNumVertices(); ++v) {
+        out.vertexRule.push_back(int(last.GetVertexRule(v)));
+        out.vertexNonManifold.push_back(last.IsVertexNonManifold(v) ? 1 : 0);
     }
     return out;
 }

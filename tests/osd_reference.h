@@ -56,6 +56,21 @@ struct OsdRefinement {
 OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                         CreaseMethod creaseMethod, int maxLevel, bool smoothTriangles = false);
 
+// OpenSubdiv's limit at the vertices of one level: Far::PrimvarRefinerReal<double>::Limit with
+// tangents (refinement and limit in double).
+struct OsdLimit {
+    std::vector<float> refined;    // level `level`'s vertices, 3 floats each, OpenSubdiv's order
+    std::vector<double> position;  // their limit positions
+    std::vector<double> du, dv;    // Limit's two tangents
+    std::vector<int> vertexRule;  // per vertex, Sdc::Crease::Rule as in OsdLevelTopology
+    std::vector<char> vertexNonManifold;
+};
+
+// Refines `mesh` to `level` as osdRefine does (isLeftHanded set as asked) and evaluates the limit
+// there.
+OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                  CreaseMethod creaseMethod, int level, bool smoothTriangles = false, bool leftHanded = false);
+
 // Result of matching each vertex of `ours` to a distinct vertex of `reference` by position.
 struct PositionMatch {
     int numOurs = 0;

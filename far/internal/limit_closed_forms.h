@@ -16,5 +16,11 @@ void bilinearLimit(const LimitVertex& vertex, LimitMask& out);
 // Whether every face around the vertex has `corners` corners.
 bool ringFacesHave(const LimitVertex& vertex, int corners);
 
+// For the mixed schemes: Catmull-Clark's closed form where every face around the vertex is a
+// quad, or (`loopOnTriangles`) Loop's where every one is a triangle, and no corner of those faces
+// is on a tri/quad seam, so that the scheme's masks there and on every later level are those
+// schemes' own (docs/limit.md). Returns false, writing nothing, elsewhere.
+bool pureClosedForm(const LimitVertex& vertex, bool loopOnTriangles, LimitMask& out);
+
 }  // namespace v0
 }  // namespace quadtri

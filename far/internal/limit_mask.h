@@ -11,19 +11,19 @@
 namespace quadtri {
 inline namespace v0 {
 
-// A vertex's faces and edges in rotational order, turning the way the faces' winding runs
-// (counter-clockwise seen from outside; Options::leftHanded reversed): face i lies between
+// A vertex's faces and edges in rotational order, counter-clockwise seen from outside (Topology
+// stores every face so, left-handed input reversed): face i lies between
 // edges[i] (the edge that leaves the vertex in face i's winding) and edges[i + 1] (the edge that
 // enters it; edges[0] again for an interior vertex).
-//   - interior manifold vertex: faces.size() == edges.size(); the first face is the first of
-//     Topology::facesOfVertex (the lowest face index), as OpenSubdiv starts;
+//   - interior manifold vertex: faces.size() == edges.size(); where the ring starts is chosen as
+//     OpenSubdiv chooses it (far/internal/limit_ring.h), which decides the side a crease's normal
+//     is taken on and a corner's tangents;
 //   - boundary manifold vertex: edges.size() == faces.size() + 1, edges[0] and edges.back() the
 //     boundary edges;
 //   - non-manifold vertex (manifold == false): faces and edges in Topology's incidence order,
 //     with no rotational meaning.
-// neighbours[i] is edges[i]'s other end, opposite[i] face i's corner two after the vertex in the
-// face's own listing (the diagonal corner of a quad), the two vertex lists OpenSubdiv's limit masks
-// weigh.
+// neighbours[i] is edges[i]'s other end, opposite[i] face i's corner two after the vertex (a
+// quad's diagonal corner): the two vertex lists OpenSubdiv's limit masks weigh.
 struct VertexRing {
     int vertex = -1;
     bool manifold = true;
@@ -34,14 +34,6 @@ struct VertexRing {
     std::vector<int> opposite;
     std::vector<float> edgeSharpness;  // per edges[i], at this level
 };
-
-// Fills `ring` for vertex v of a level with full topology.
-void orderVertexRing(const Topology& level, int v, bool leftHanded, VertexRing& ring);
-
-// The rule a limit mask follows at a vertex of the level asked for: from the level's own
-// sharpness, a semi-sharp vertex or edge counting as sharp, as OpenSubdiv's Limit does
-// (docs/limit.md, "Semi-sharp features").
-VertexRule limitRule(const Topology& level, const VertexRing& ring);
 
 // Position, dU and dV weights over one support; add() merges a vertex that appears twice.
 class LimitMask {

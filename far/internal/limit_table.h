@@ -26,8 +26,12 @@ struct LimitStencilTableD {
     int numStencils() const { return int(sizes.size()); }
 };
 
-// The limit masks of every vertex of `level` (full topology) over its own vertices.
-LimitStencilTableD buildLimitStencils(const Topology& level, const Options& options);
+class RingStarts;
+
+// The limit masks of every vertex of `level` (full topology) over its own vertices. `starts`
+// says where interior rings start (as OpenSubdiv does after refining, far/internal/limit_ring.h);
+// null: at each vertex's lowest-numbered face, as OpenSubdiv does at level 0.
+LimitStencilTableD buildLimitStencils(const Topology& level, const Options& options, const RingStarts* starts);
 
 // limit ∘ inner: the limit stencils expanded over inner's sources. Throws std::length_error before
 // the result's arrays would pass `maxBytes`.

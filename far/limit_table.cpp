@@ -1,0 +1,145 @@
+// Limit stencil tables (docs/limit.md): one mask per vertex from the scheme's hook, built in
+// parallel parts (one ring, mask and cache per part, joined in vertex order, so the table does
+// not depend on the thread count), composition over the control vertices, the pooled float table.
+#include "far/internal/limit_table.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "far/internal/limit_eigen.h"
+#include "far/internal/limit_ring.h"
+#include "far/internal/scheme.h"
+#include "far/internal/weight_pool.h"
+
+namespace quadtri {
+inline namespace v0 {
+
+namespace {
+
+void appendMask(const LimitMask& mask, LimitStencilTableD& table) {
+    table.offsets.push_back(int(table.indices.size()));
+    table.sizes.push_back(mask.size());
+    for (int k = 0; k < mask.size(); ++k) {
+        table.indices.push_back(mask.indices[k]);
+        table.weights.push_back(mask.position[k]);
+        table.weights.push_back(mask.du[k]);
+        table.weights.push_back(mask.dv[k]);
+    }
+}
+
+void append(const LimitStencilTableD& part, LimitStencilTableD& table) {
+    const int base = int(table.indices.size());
+    for (int offset : part.offsets) table.offsets.push_back(base + offset);
+    table.sizes.insert(table.sizes.end(), part.sizes.begin(), part.sizes.end());
+    table.indices.insert(table.indices.end(), part.indices.begin(), part.indices.end());
+    table.weights.insert(table.weights.end(), part.weights.begin(), part.weights.end());
+}
+
+// Vertices per part below which a level is not split.
+constexpr int kMinVerticesPerPart = 16384;
+
+}  // namespace
+
+LimitStencilTableD buildLimitStencils(const Topology& level, const Options& options, const RingStarts* starts) {
+    const SchemeRules& rules = rulesOf(options.scheme);
+    const int n = level.numVertices;
+    const int parts = std::max(1, std::min(tbb::this_task_arena::max_concurrency(), n / kMinVerticesPerPart));
+    auto split = [&](int k) { return int(std::int64_t(n) * k / parts); };
+    std::vector<LimitStencilTableD> built(parts);
+    tbb::parallel_for(0, parts, [&](int k) {
+        VertexRing ring;
+        LimitMask mask;
+        LimitMaskCache cache;
+        LimitStencilTableD& part = built[k];
+        for (int v = split(k); v < split(k + 1); ++v) {
+            orderVertexRing(level, v, starts ? starts->startFace(v) : -1, ring);
+            mask.clear();
+            rules.limitMask(LimitVertex{level, options, ring, limitRule(level, ring)}, cache, mask);
+            appendMask(mask, part);
+        }
+    });
+    LimitStencilTableD table;
+    table.numSourceVertices = n;
+    if (parts == 1) {
+        table.sizes = std::move(built[0].sizes);
+        table.offsets = std::move(built[0].offsets);
+        table.indices = std::move(built[0].indices);
+        table.weights = std::move(built[0].weights);
+    } else {
+        for (const LimitStencilTableD& part : built) append(part, table);
+    }
+    return table;
+}
+
+LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
+                                        std::size_t maxBytes) {
+    LimitStencilTableD out;
+    out.numSourceVertices = inner.numSourceVertices;
+    const int n = limit.numStencils();
+    out.sizes.reserve(n);
+    out.offsets.reserve(n);
+    std::vector<int> slot(inner.numSourceVertices, -1);
+    const std::size_t bytesPerEntry = sizeof(int) + 3 * sizeof(double);
+    const std::size_t fixedBytes = std::size_t(n) * 2 * sizeof(int);
+    for (int i = 0; i < n; ++i) {
+        const int first = int(out.indices.size());
+        out.offsets.push_back(first);
+        for (int k = 0; k < limit.sizes[i]; ++k) {
+            const int entry = limit.offsets[i] + k, s = limit.indices[entry];
+            const double* w = limit.weights.data() + 3 * std::size_t(entry);
+            for (int j = 0; j < inner.sizes[s]; ++j) {
+                const int c = inner.indices[inner.offsets[s] + j];
+                const double x = inner.weights[inner.offsets[s] + j];
+                if (slot[c] < 0) {
+                    slot[c] = int(out.indices.size());
+                    out.indices.push_back(c);
+                    out.weights.insert(out.weights.end(), {0.0, 0.0, 0.0});
+                }
+                double* o = out.weights.data() + 3 * std::size_t(slot[c]);
+                o[0] += w[0] * x;
+                o[1] += w[1] * x;
+                o[2] += w[2] * x;
+            }
+        }
+        for (std::size_t k = first; k < out.indices.size(); ++k) slot[out.indices[k]] = -1;
+        out.sizes.push_back(int(out.indices.size()) - first);
+        if (out.indices.size() >= std::size_t(INT32_MAX) || fixedBytes + out.indices.size() * bytesPerEntry > maxBytes)
+            throw std::length_error("composed limit stencils pass their budget");
+    }
+    return out;
+}
+
+LimitStencilTable toFloatTable(const LimitStencilTableD& table) {
+    LimitStencilTable out;
+    out.numSourceVertices = table.numSourceVertices;
+    const int n = table.numStencils();
+    out.offsets.assign(std::size_t(n) + 1, 0);
+    out.weightOffsets.assign(n, 0);
+    out.indices.resize(table.indices.size());
+    WeightPool pool;
+    std::vector<float> triples;
+    std::size_t entries = 0;
+    for (int i = 0; i < n; ++i) {
+        const int size = table.sizes[i], first = table.offsets[i];
+        triples.resize(3 * std::size_t(size));
+        for (int k = 0; k < 3 * size; ++k) triples[k] = float(table.weights[3 * std::size_t(first) + k]);
+        std::copy(table.indices.begin() + first, table.indices.begin() + first + size, out.indices.begin() + entries);
+        entries += size;
+        out.weightOffsets[i] = pool.intern(triples.data(), 3 * size);
+        out.offsets[i + 1] = int(entries);
+    }
+    out.weights = pool.takeWeights();
+    return out;
+}
+
+std::size_t bytesOf(const LimitStencilTableD& table) {
+    return (table.sizes.size() + table.offsets.size() + table.indices.size()) * sizeof(int) +
+           table.weights.size() * sizeof(double);
+}
+
+}  // namespace v0
+}  // namespace quadtri

@@ -1,0 +1,50 @@
+// Test helpers for limit stencils: the plain loop that applies a LimitStencilTable's three weight
+// runs (in double, so that tests see the table's own error only), and vector geometry.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <quadtri/far/limit_stencil_table.h>
+
+namespace quadtri::test {
+
+using Vec3 = std::array<double, 3>;
+
+struct LimitData {
+    std::vector<Vec3> position, du, dv;
+};
+
+inline LimitData applyLimit(const LimitStencilTable& table, const std::vector<float>& xyz) {
+    LimitData out;
+    for (int i = 0; i < table.numStencils(); ++i) {
+        Vec3 p{0, 0, 0}, u{0, 0, 0}, v{0, 0, 0};
+        const float* w = table.weightsOf(i);
+        for (int k = 0; k < table.size(i); ++k) {
+            const float* s = xyz.data() + 3 * std::size_t(table.indices[table.offsets[i] + k]);
+            for (int c = 0; c < 3; ++c) {
+                p[c] += double(w[3 * k]) * s[c];
+                u[c] += double(w[3 * k + 1]) * s[c];
+                v[c] += double(w[3 * k + 2]) * s[c];
+            }
+        }
+        out.position.push_back(p);
+        out.du.push_back(u);
+        out.dv.push_back(v);
+    }
+    return out;
+}
+
+inline Vec3 vec3(const float* p) { return {p[0], p[1], p[2]}; }
+inline Vec3 vec3(const double* p) { return {p[0], p[1], p[2]}; }
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+inline double distance(const Vec3& a, const Vec3& b) { return norm({a[0] - b[0], a[1] - b[1], a[2] - b[2]}); }
+// The angle between two vectors, in radians (robust near 0).
+inline double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
+
+}  // namespace quadtri::test
