@@ -8,6 +8,10 @@
 
 #include "kernels/mesh_normal_kernel.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace quadtri {
 inline namespace v0 {
 namespace kernels {
@@ -42,6 +46,15 @@ inline void storeIfWanted(const LimitOutput& out, int i, const float* value, int
     for (int c = 0; c < width; ++c) d[c] = value[c];
 }
 
+// Where the tangents are degenerate: the fallback's mesh normal of vertex i, or (0, 0, 0).
+inline void degenerateNormal(const float* src, int srcStride, const LimitOutputs& o, int i, float* d) {
+    if (o.fallback) {
+        meshNormal(src, srcStride, *o.fallback, i, d);
+    } else {
+        d[0] = d[1] = d[2] = 0.0f;
+    }
+}
+
 // The normal of stencil i from its tangents (width 3).
 inline void limitNormal(const float* src, int srcStride, const float u[3], const float v[3], const LimitOutputs& o,
                         int i) {
@@ -52,10 +65,8 @@ inline void limitNormal(const float* src, int srcStride, const float u[3], const
     float* d = o.normal.data + static_cast<long>(i) * o.normal.stride;
     if (n2 > kDegenerateSine * kDegenerateSine * u2 * v2) {
         normalizeInto(n, d);
-    } else if (o.fallback) {
-        meshNormal(src, srcStride, *o.fallback, i, d);
     } else {
-        d[0] = d[1] = d[2] = 0.0f;
+        degenerateNormal(src, srcStride, o, i, d);
     }
 }
 
@@ -86,6 +97,64 @@ inline void evalLimitFixed(const float* src, int srcStride, const LimitStencilAr
         }
     }
 }
+
+#if defined(__SSE2__)
+// Width 3 with x, y, z in one SSE register per sum: per entry three multiplies and three adds
+// instead of nine of each, and the normal in registers too. Lane by lane these are the scalar
+// code's float operations in the same order (SSE2 has no fused multiply-add; sqrt and division
+// are IEEE), so the results are bitwise those of the generic loop and limitNormal.
+inline __m128 load3(const float* p) {
+    const __m128 xy = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p)));
+    return _mm_movelh_ps(xy, _mm_load_ss(p + 2));
+}
+
+inline void store3(float* d, __m128 v) {
+    _mm_storel_pi(reinterpret_cast<__m64*>(d), v);
+    _mm_store_ss(d + 2, _mm_movehl_ps(v, v));
+}
+
+inline __m128 yzx(__m128 a) { return _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1)); }
+
+// Lane 0: (x² + y²) + z², as the scalar sums.
+inline __m128 dot3(__m128 a) {
+    const __m128 m = _mm_mul_ps(a, a);
+    return _mm_add_ss(_mm_add_ss(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 1, 1, 1))), _mm_movehl_ps(m, m));
+}
+
+inline void limitNormalSse(const float* src, int srcStride, __m128 u, __m128 v, const LimitOutputs& o, int i) {
+    const __m128 c = _mm_sub_ps(_mm_mul_ps(u, yzx(v)), _mm_mul_ps(yzx(u), v));
+    const __m128 n = yzx(c);  // (u1 v2 - u2 v1, u2 v0 - u0 v2, u0 v1 - u1 v0)
+    const float n2 = _mm_cvtss_f32(dot3(n)), u2 = _mm_cvtss_f32(dot3(u)), v2 = _mm_cvtss_f32(dot3(v));
+    float* d = o.normal.data + static_cast<long>(i) * o.normal.stride;
+    if (n2 > kDegenerateSine * kDegenerateSine * u2 * v2) {
+        const __m128 scale = _mm_div_ss(_mm_set_ss(1.0f), _mm_sqrt_ss(_mm_set_ss(n2)));
+        store3(d, _mm_mul_ps(n, _mm_shuffle_ps(scale, scale, 0)));
+    } else {
+        degenerateNormal(src, srcStride, o, i, d);
+    }
+}
+
+template <>
+inline void evalLimitFixed<3>(const float* src, int srcStride, const LimitStencilArrays& t, const LimitOutputs& o,
+                              int start, int end) {
+    for (int i = start; i < end; ++i) {
+        __m128 p = _mm_setzero_ps(), u = _mm_setzero_ps(), v = _mm_setzero_ps();
+        const int first = t.offsets[i], n = t.offsets[i + 1] - first;
+        const int* idx = t.indices + first;
+        const float* w = t.weights + t.weightOffsets[i];
+        for (int k = 0; k < n; ++k, w += 3) {
+            const __m128 s = load3(src + static_cast<long>(idx[k]) * srcStride);
+            p = _mm_add_ps(p, _mm_mul_ps(_mm_set1_ps(w[0]), s));
+            u = _mm_add_ps(u, _mm_mul_ps(_mm_set1_ps(w[1]), s));
+            v = _mm_add_ps(v, _mm_mul_ps(_mm_set1_ps(w[2]), s));
+        }
+        if (o.position.data) store3(o.position.data + static_cast<long>(i) * o.position.stride, p);
+        if (o.du.data) store3(o.du.data + static_cast<long>(i) * o.du.stride, u);
+        if (o.dv.data) store3(o.dv.data + static_cast<long>(i) * o.dv.stride, v);
+        if (o.normal.data) limitNormalSse(src, srcStride, u, v, o, i);
+    }
+}
+#endif
 
 inline LimitOutput shifted(const LimitOutput& out, int by) { return {out.data ? out.data + by : nullptr, out.stride}; }
 

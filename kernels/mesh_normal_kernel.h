@@ -1,7 +1,6 @@
 // The MeshNormals loop, shared by the serial and threaded evaluators (and mirrored in GLSL by
-// shaders/mesh_normals.comp): vertex v's normal is the normalised sum of the vector areas of the
-// faces around it. A face's vector area (doubled) is sum_k (p_k - p_0) x (p_{k+1} - p_0), the same
-// for any planar or non-planar polygon as Newell's formula; for a triangle it is (b-a) x (c-a).
+// shaders/mesh_normals.comp): vertex v's normal is the normalised sum over its triples (a, b, c)
+// of (p_b - p_v) x (p_c - p_a), the doubled vector areas of the faces around it (MeshNormalTable).
 #pragma once
 
 #include <cmath>
@@ -11,28 +10,9 @@ inline namespace v0 {
 namespace kernels {
 
 struct MeshNormalArrays {
-    const int* vertexOffsets;  // numVertices + 1
-    const int* vertexFaces;
-    const int* faceOffsets;
-    const int* faceVerts;
+    const int* offsets;  // numVertices + 1
+    const int* corners;  // 3 per triple
 };
-
-// Adds face f's doubled vector area to n.
-inline void addFaceArea(const float* src, int stride, const MeshNormalArrays& t, int f, float n[3]) {
-    const int* c = t.faceVerts + t.faceOffsets[f];
-    const int size = t.faceOffsets[f + 1] - t.faceOffsets[f];
-    const float* p0 = src + static_cast<long>(c[0]) * stride;
-    const float* p1 = src + static_cast<long>(c[1]) * stride;
-    float a[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
-    for (int k = 2; k < size; ++k) {
-        const float* p = src + static_cast<long>(c[k]) * stride;
-        const float b[3] = {p[0] - p0[0], p[1] - p0[1], p[2] - p0[2]};
-        n[0] += a[1] * b[2] - a[2] * b[1];
-        n[1] += a[2] * b[0] - a[0] * b[2];
-        n[2] += a[0] * b[1] - a[1] * b[0];
-        a[0] = b[0], a[1] = b[1], a[2] = b[2];
-    }
-}
 
 // n scaled to unit length; (0, 0, 0) stays (0, 0, 0).
 inline void normalizeInto(const float n[3], float* d) {
@@ -44,8 +24,19 @@ inline void normalizeInto(const float n[3], float* d) {
 // The unit normal of vertex v into d[0..2]; (0, 0, 0) for a vertex without faces or whose faces
 // have no area.
 inline void meshNormal(const float* src, int srcStride, const MeshNormalArrays& t, int v, float* d) {
+    const float* p = src + static_cast<long>(v) * srcStride;
     float n[3] = {0.0f, 0.0f, 0.0f};
-    for (int k = t.vertexOffsets[v]; k < t.vertexOffsets[v + 1]; ++k) addFaceArea(src, srcStride, t, t.vertexFaces[k], n);
+    for (int k = t.offsets[v]; k < t.offsets[v + 1]; ++k) {
+        const int* c = t.corners + 3 * static_cast<long>(k);
+        const float* a = src + static_cast<long>(c[0]) * srcStride;
+        const float* b = src + static_cast<long>(c[1]) * srcStride;
+        const float* e = src + static_cast<long>(c[2]) * srcStride;
+        const float x[3] = {b[0] - p[0], b[1] - p[1], b[2] - p[2]};
+        const float y[3] = {e[0] - a[0], e[1] - a[1], e[2] - a[2]};
+        n[0] += x[1] * y[2] - x[2] * y[1];
+        n[1] += x[2] * y[0] - x[0] * y[2];
+        n[2] += x[0] * y[1] - x[1] * y[0];
+    }
     normalizeInto(n, d);
 }
 

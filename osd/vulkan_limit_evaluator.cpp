@@ -20,9 +20,9 @@ extern const std::size_t mesh_normals_comp_words;
 
 namespace {
 
-constexpr uint32_t kLimitBindings = 13;  // table (4), source, 4 outputs, fallback table (4)
+constexpr uint32_t kLimitBindings = 11;  // table (4), source, 4 outputs, fallback table (2)
 constexpr uint32_t kLimitPushWords = 7;  // 5 float offsets, start, end
-constexpr uint32_t kNormalBindings = 6;  // table (4), source, destination
+constexpr uint32_t kNormalBindings = 4;  // table (2), source, destination
 constexpr uint32_t kNormalPushWords = 4;
 
 // Floats needed to hold `count` elements of `d` (0 when count is 0).
@@ -99,10 +99,9 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
     const bool useFallback = fallback && present[3];
     if (useFallback) {
         mask |= 16;
-        for (VkBuffer b : {fallback->vertexOffsets(), fallback->vertexFaces(), fallback->faceOffsets(), fallback->faceVerts()})
-            infos.push_back({b, 0, VK_WHOLE_SIZE});
+        for (VkBuffer b : {fallback->offsets(), fallback->corners()}) infos.push_back({b, 0, VK_WHOLE_SIZE});
     } else {
-        for (int k = 0; k < 4; ++k) infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
+        for (int k = 0; k < 2; ++k) infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
     }
     constants.push_back(mask);
     limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end);
@@ -164,8 +163,7 @@ void VulkanLimitEvaluator::recordNormals(VkCommandBuffer cmd, bool waited, const
     const detail::BoundBuffer s = detail::bindAligned(ctx_, src.buffer, src.byteOffset, srcDesc, call);
     const detail::BoundBuffer d = detail::bindAligned(ctx_, dst.buffer, dst.byteOffset, dstDesc, call);
     const std::vector<VkDescriptorBufferInfo> infos = {
-        {table.vertexOffsets(), 0, VK_WHOLE_SIZE}, {table.vertexFaces(), 0, VK_WHOLE_SIZE},
-        {table.faceOffsets(), 0, VK_WHOLE_SIZE}, {table.faceVerts(), 0, VK_WHOLE_SIZE}, s.info, d.info};
+        {table.offsets(), 0, VK_WHOLE_SIZE}, {table.corners(), 0, VK_WHOLE_SIZE}, s.info, d.info};
     const std::vector<int32_t> constants{srcDesc.stride, dstDesc.stride};
     normals_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants,
                      {s.floatOffset, d.floatOffset}, start, end);

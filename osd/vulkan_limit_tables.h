@@ -33,20 +33,18 @@ private:
 
 class VulkanMeshNormalTable {
 public:
-    // Copies the table's four arrays through one staging buffer (waits).
+    // Copies the table's two arrays through one staging buffer (waits).
     VulkanMeshNormalTable(VulkanContext& ctx, const MeshNormalTable& table);
 
     int numVertices() const { return numVertices_; }
-    VkBuffer vertexOffsets() const { return vertexOffsets_.buffer(); }
-    VkBuffer vertexFaces() const { return vertexFaces_.buffer(); }
-    VkBuffer faceOffsets() const { return faceOffsets_.buffer(); }
-    VkBuffer faceVerts() const { return faceVerts_.buffer(); }
+    VkBuffer offsets() const { return offsets_.buffer(); }
+    VkBuffer corners() const { return corners_.buffer(); }
     VkDevice device() const { return device_; }
 
 private:
     VkDevice device_;
     int numVertices_ = 0;
-    detail::DeviceBuffer vertexOffsets_, vertexFaces_, faceOffsets_, faceVerts_;
+    detail::DeviceBuffer offsets_, corners_;
 };
 
 }  // namespace v0

@@ -31,10 +31,8 @@ layout(std430, set = 0, binding = 5) writeonly buffer Position { float position[
 layout(std430, set = 0, binding = 6) writeonly buffer Du { float du[]; };
 layout(std430, set = 0, binding = 7) writeonly buffer Dv { float dv[]; };
 layout(std430, set = 0, binding = 8) writeonly buffer Normal { float normal[]; };
-layout(std430, set = 0, binding = 9) readonly buffer VertexOffsets { int vertexOffsets[]; };
-layout(std430, set = 0, binding = 10) readonly buffer VertexFaces { int vertexFaces[]; };
-layout(std430, set = 0, binding = 11) readonly buffer FaceOffsets { int faceOffsets[]; };
-layout(std430, set = 0, binding = 12) readonly buffer FaceVerts { int faceVerts[]; };
+layout(std430, set = 0, binding = 9) readonly buffer FallbackOffsets { int fallbackOffsets[]; };
+layout(std430, set = 0, binding = 10) readonly buffer FallbackCorners { int fallbackCorners[]; };
 
 layout(push_constant) uniform Push {
     uint srcOffset;  // floats before element 0 in each bound range
@@ -52,18 +50,11 @@ vec3 source(int v) {
 }
 
 vec3 meshNormal(uint v) {
+    const vec3 p = source(int(v));
     vec3 n = vec3(0.0);
-    for (int k = vertexOffsets[v]; k < vertexOffsets[v + 1u]; ++k) {
-        const int f = vertexFaces[k];
-        const int first = faceOffsets[f], last = faceOffsets[f + 1];
-        const vec3 p0 = source(faceVerts[first]);
-        vec3 a = source(faceVerts[first + 1]) - p0;
-        for (int c = first + 2; c < last; ++c) {
-            const vec3 b = source(faceVerts[c]) - p0;
-            n += cross(a, b);
-            a = b;
-        }
-    }
+    for (int k = fallbackOffsets[v]; k < fallbackOffsets[v + 1u]; ++k)
+        n += cross(source(fallbackCorners[3 * k + 1]) - p,
+                   source(fallbackCorners[3 * k + 2]) - source(fallbackCorners[3 * k]));
     const float len2 = dot(n, n);
     return n * (len2 > 0.0 ? inversesqrt(len2) : 0.0);
 }

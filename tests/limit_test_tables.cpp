@@ -54,11 +54,9 @@ CornerLevel cornerLevel(int level) {
     LimitStencilTable& t = out.table;
     t.numSourceVertices = mn.numVertices;
     for (int v = 0; v < mn.numVertices; ++v) {
-        const int f = mn.vertexFaces[mn.vertexOffsets[v]];
-        const int first = mn.faceOffsets[f], size = mn.faceOffsets[f + 1] - first;
-        int at = 0;
-        while (mn.faceVerts[first + at] != v) ++at;
-        const int next = mn.faceVerts[first + (at + 1) % size], prev = mn.faceVerts[first + (at + size - 1) % size];
+        // The first triple: (next, opposite, previous) of a quad, (next, previous, previous) of a triangle.
+        const int* triple = &mn.corners[3 * std::size_t(mn.offsets[v])];
+        const int next = triple[0], prev = triple[2];
         t.indices.insert(t.indices.end(), {v, next, prev});
         t.offsets.push_back(int(t.indices.size()));
         t.weightOffsets.push_back(int(t.weights.size()));

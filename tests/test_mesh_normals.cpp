@@ -128,11 +128,34 @@ TEST(MeshNormals, FacesWeighByTheirArea) {
     expectNormal(n, 3, 0, 1, 0, "second triangle only");
 }
 
+// Newell's vector area sum_k p_k x p_{k+1} of each face, summed at vertex 0: a non-planar quad, a
+// non-planar pentagon and a triangle around it.
+TEST(MeshNormals, AnyPolygonAddsNewellsVectorArea) {
+    const std::vector<float> xyz = {0, 0, 0,  1, 0, 0.3f,  1, 1, 0,  0, 1, -0.2f,  -1, 1, 0.1f,  -1.2f, 0, 0.4f,
+                                    -1, -1, 0,  0.5f, -1, 0.2f};
+    const std::vector<int> sizes = {4, 5, 3};
+    const std::vector<int> verts = {0, 1, 2, 3,  0, 3, 4, 5, 6,  0, 6, 7};
+    double expected[3] = {0, 0, 0};
+    std::size_t at = 0;
+    for (int s : sizes) {
+        for (int k = 0; k < s; ++k) {
+            const float* p = &xyz[3 * verts[at + k]];
+            const float* q = &xyz[3 * verts[at + (k + 1) % s]];
+            expected[0] += double(p[1]) * q[2] - double(p[2]) * q[1];
+            expected[1] += double(p[2]) * q[0] - double(p[0]) * q[2];
+            expected[2] += double(p[0]) * q[1] - double(p[1]) * q[0];
+        }
+        at += s;
+    }
+    const std::vector<float> n = normalsOf(tableOf(sizes, verts, 8), xyz);
+    expectNormal(n, 0, expected[0], expected[1], expected[2], "quad + pentagon + triangle");
+}
+
 TEST(MeshNormals, HolesAndLonelyVerticesGiveNoNormal) {
     // Two quads side by side, the second a hole; vertex 6 belongs to no face.
     const std::vector<float> xyz = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 5, 5, 5};
     const MeshNormalTable t = tableOf({4, 4}, {0, 1, 4, 3, 1, 2, 5, 4}, 7, false, {1});
-    EXPECT_EQ(t.numFaces(), 1);
+    EXPECT_EQ(t.numTriples(), 4);  // one per corner of the drawn quad
     const std::vector<float> n = normalsOf(t, xyz);
     for (int v : {0, 1, 3, 4}) expectNormal(n, v, 0, 0, 1, "drawn quad");
     for (int v : {2, 5, 6})

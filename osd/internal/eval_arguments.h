@@ -73,8 +73,7 @@ inline kernels::LimitStencilArrays limitArrays(const LimitStencilTable& table) {
 }
 
 inline kernels::MeshNormalArrays meshNormalArrays(const MeshNormalTable& table) {
-    return kernels::MeshNormalArrays{table.vertexOffsets.data(), table.vertexFaces.data(), table.faceOffsets.data(),
-                                     table.faceVerts.data()};
+    return kernels::MeshNormalArrays{table.offsets.data(), table.corners.data()};
 }
 
 }  // namespace detail
