@@ -16,7 +16,10 @@
 
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/tbb_evaluator.h>
+#include <quadtri/far/refiner.h>
+#include "bench/torus.h"
 #include "tests/limit_test_tables.h"
+#include "tests/test_support.h"
 
 namespace quadtri::test {
 namespace {
@@ -204,6 +207,57 @@ TEST(LimitEvaluator, TbbEqualsCpuBitwise) {
     evalOn(Host::Cpu, L.positions, kPacked, cpu, all, L.table, &L.meshNormals);
     tbb::task_arena(2).execute([&] { evalOn(Host::Tbb, L.positions, kPacked, tbb, all, L.table, &L.meshNormals); });
     expectSameBits(cpu, tbb, "corner level with fallback");
+}
+
+// The Refiner's own tables. A flat grid's limit surface is its plane: every normal is +z, the
+// corners' too (their tangents are the first face's edges), and the limit points keep z = 0.
+// On a torus the limit normals point outward and near the refined mesh's normals.
+TEST(LimitEvaluator, RefinerTablesGiveFlatAndOutwardNormals) {
+    const int nx = 5, ny = 4;
+    std::vector<int> sizes, verts;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const int a = j * (nx + 1) + i;
+            sizes.push_back(4);
+            verts.insert(verts.end(), {a, a + 1, a + nx + 2, a + nx + 1});
+        }
+    std::vector<float> grid;
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) grid.insert(grid.end(), {float(i) + 0.2f * float(j % 2), 0.8f * float(j), 0.0f});
+    for (Scheme scheme : {Scheme::CatmullClark, Scheme::StamLoop}) {
+        Options options;
+        options.scheme = scheme;
+        Refiner refiner(descriptorOf((nx + 1) * (ny + 1), sizes, verts), options);
+        refiner.refineUniform(2);
+        const LimitStencilTable t = refiner.factorizedLimitStencils(2);
+        Outputs o = makeOutputs(3, t.numStencils());
+        const bool want[4] = {true, false, false, true};
+        evalOn(Host::Cpu, grid, kPacked, o, want, t, nullptr);
+        for (int i = 0; i < t.numStencils(); ++i) {
+            ASSERT_EQ(element(o, 0, i)[2], 0.0f) << toString(scheme) << " point " << i;
+            ASSERT_EQ(element(o, 3, i)[0], 0.0f) << toString(scheme) << " point " << i;
+            ASSERT_EQ(element(o, 3, i)[1], 0.0f) << toString(scheme) << " point " << i;
+            ASSERT_FLOAT_EQ(element(o, 3, i)[2], 1.0f) << toString(scheme) << " point " << i;
+        }
+    }
+    const bench::ControlMesh m = bench::makeTorus(12, bench::TorusFaces::Quads);
+    Options options;
+    options.scheme = Scheme::CatmullClark;
+    Refiner refiner(descriptorOf(m.numVertices, m.faceSizes, m.faceVerts), options);
+    refiner.refineUniform(3);
+    const LimitStencilTable t = refiner.factorizedLimitStencils(3);
+    const MeshNormalTable mesh = buildMeshNormalTable(refiner.faces(3));
+    const std::vector<float> level3 = evaluateLevels(refiner, m.positions, 3)[3];
+    std::vector<float> meshNormals(level3.size());
+    CpuEvaluator::EvalMeshNormals(level3.data(), kPacked, meshNormals.data(), kPacked, mesh);
+    Outputs o = makeOutputs(3, t.numStencils());
+    const bool want[4] = {true, false, false, true};
+    evalOn(Host::Cpu, m.positions, kPacked, o, want, t, nullptr);
+    for (int i = 0; i < t.numStencils(); ++i) {
+        const float* n = element(o, 3, i);
+        const float* q = &meshNormals[3 * i];
+        ASSERT_GT(n[0] * q[0] + n[1] * q[1] + n[2] * q[2], std::cos(0.1)) << "point " << i;  // within ~6 degrees
+    }
 }
 
 std::string messageOf(const std::function<void()>& call) {

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -121,6 +123,24 @@ TEST_F(VulkanTest, LimitStencilsMatchCpu) {
             compareLimit(*ctx, eval, table, src, srcDesc, width, want, nullptr, subset == 15 ? 100 : 0,
                          subset == 15 ? 4000 : -1, "width " + std::to_string(width) + " subset " + std::to_string(subset));
         }
+    }
+}
+
+TEST_F(VulkanTest, RefinerLimitTablesMatchCpu) {
+    VulkanLimitEvaluator eval(*ctx);
+    const bool all[4] = {true, true, true, true};
+    for (auto [faces, scheme] : {std::pair{bench::TorusFaces::Quads, Scheme::CatmullClark},
+                                 std::pair{bench::TorusFaces::Triangles, Scheme::Loop}}) {
+        const bench::ControlMesh m = bench::makeTorus(12, faces);
+        Options options;
+        options.scheme = scheme;
+        Refiner refiner(descriptorOf(m.numVertices, m.faceSizes, m.faceVerts), options);
+        refiner.refineUniform(2);
+        compareLimit(*ctx, eval, refiner.factorizedLimitStencils(2), m.positions, kPacked, 3, all, nullptr, 0, -1,
+                     m.name + " factorized");
+        const MeshNormalTable level2 = buildMeshNormalTable(refiner.faces(2));
+        compareLimit(*ctx, eval, refiner.limitStencils(2), evaluateLevels(refiner, m.positions, 3)[2], kPacked, 3, all,
+                     &level2, 0, -1, m.name + " over level 2");
     }
 }
 
