@@ -103,13 +103,14 @@ inline void evalLimitFixed(const float* src, int srcStride, const LimitStencilAr
 // instead of nine of each, and the normal in registers too. Lane by lane these are the scalar
 // code's float operations in the same order (SSE2 has no fused multiply-add; sqrt and division
 // are IEEE), so the results are bitwise those of the generic loop and limitNormal.
+// Elements are only 4-byte aligned: the 8-byte moves are the unaligned-typed ones.
 inline __m128 load3(const float* p) {
-    const __m128 xy = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p)));
+    const __m128 xy = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)));
     return _mm_movelh_ps(xy, _mm_load_ss(p + 2));
 }
 
 inline void store3(float* d, __m128 v) {
-    _mm_storel_pi(reinterpret_cast<__m64*>(d), v);
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(d), _mm_castps_si128(v));
     _mm_store_ss(d + 2, _mm_movehl_ps(v, v));
 }
 
