@@ -49,6 +49,17 @@ struct RingWeights {
 
 constexpr int kPosition = 0, kU = 1, kV = 2;
 
+// cos and sin of i/n of a turn, exact where the angle is a multiple of 30 degrees (the regular
+// valences' masks then hold exact zeros and halves, as their tabulated forms do).
+double cosTurn(int i, int n) {
+    static const double kTwelfths[12] = {1.0, 0.5 * std::sqrt(3.0), 0.5, 0.0, -0.5, -0.5 * std::sqrt(3.0),
+                                         -1.0, -0.5 * std::sqrt(3.0), -0.5, 0.0, 0.5, 0.5 * std::sqrt(3.0)};
+    i = (i % n + n) % n;
+    if ((12 * i) % n == 0) return kTwelfths[12 * i / n];
+    return std::cos(2.0 * M_PI * i / n);
+}
+double sinTurn(int i, int n) { return cosTurn(4 * i - n, 4 * n); }  // sin x = cos(x - quarter turn)
+
 // A corner: the vertex itself; the tangents along its first two edges (the first face's sides),
 // scaled by `scale`.
 void cornerMasks(const VertexRing& ring, double scale, RingWeights& w) {
@@ -70,15 +81,15 @@ void catmullClarkSmooth(const VertexRing& ring, RingWeights& w) {
     const int n = int(ring.faces.size());
     const double f = 1.0 / (n * (n + 5.0)), e = 4.0 * f;
     w.vertex[kPosition] = 1.0 - n * (e + f);
-    const double theta = 2.0 * M_PI / n, cosTheta = std::cos(theta);
-    const double lambda = 5.0 / 16.0 + (cosTheta + std::cos(theta / 2) * std::sqrt(2.0 * (9.0 + cosTheta))) / 16.0;
+    const double cosTheta = cosTurn(1, n);
+    const double lambda = 5.0 / 16.0 + (cosTheta + cosTurn(1, 2 * n) * std::sqrt(2.0 * (9.0 + cosTheta))) / 16.0;
     const double faceScale = 1.0 / (4.0 * lambda - 1.0);
     for (int i = 0; i < n; ++i) {
         w.edge[kPosition][i] = e;
         w.face[kPosition][i] = f;
         // dV is dU turned by one slot, a quarter turn at the regular valence.
         const int next = (i + 1) % n;
-        const double ci = std::cos(i * theta), ci1 = std::cos((i + 1) * theta);
+        const double ci = cosTurn(i, n), ci1 = cosTurn(i + 1, n);
         w.edge[kU][i] = 4.0 * ci;
         w.face[kU][i] = faceScale * (ci + ci1);
         w.edge[kV][next] = 4.0 * ci;
@@ -109,15 +120,15 @@ void catmullClarkCrease(const VertexRing& ring, RingWeights& w) {
         face[ends.first + 1] = 1.0 / 6.0;
     } else {
         const int k = interior + 1;
-        const double theta = M_PI / k, cosTheta = std::cos(theta), sinTheta = std::sin(theta);
+        const double cosTheta = cosTurn(1, 2 * k), sinTheta = sinTurn(1, 2 * k);  // θ = π/k
         const double d = 1.0 / (k * (3.0 + cosTheta)), r = (cosTheta + 1.0) / sinTheta;
         w.vertex[kV] = 4.0 * r * (cosTheta - 1.0) * d;
         edge[ends.first] = -r * (1.0 + 2.0 * cosTheta) * d;
         edge[ends.last] = -r * (1.0 + 2.0 * cosTheta) * d;
         face[ends.first] = sinTheta * d;
         for (int i = 1; i < k; ++i) {
-            edge[ends.first + i] = 4.0 * std::sin(i * theta) * d;
-            face[ends.first + i] = (std::sin(i * theta) + std::sin((i + 1) * theta)) * d;
+            edge[ends.first + i] = 4.0 * sinTurn(i, 2 * k) * d;
+            face[ends.first + i] = (sinTurn(i, 2 * k) + sinTurn(i + 1, 2 * k)) * d;
         }
     }
 }
@@ -126,8 +137,8 @@ void catmullClarkCrease(const VertexRing& ring, RingWeights& w) {
 void loopSmoothTangents(const VertexRing& ring, RingWeights& w) {
     const int n = int(ring.edges.size());
     for (int i = 0; i < n; ++i) {
-        w.edge[kU][i] = std::cos(2.0 * M_PI * i / n);
-        w.edge[kV][i] = std::sin(2.0 * M_PI * i / n);
+        w.edge[kU][i] = cosTurn(i, n);
+        w.edge[kV][i] = sinTurn(i, n);
     }
 }
 
@@ -135,7 +146,7 @@ void loopSmooth(const VertexRing& ring, RingWeights& w) {
     const int n = int(ring.faces.size());
     double e = 1.0 / 12.0;
     if (n != 6) {
-        const double beta = 0.25 * std::cos(2.0 * M_PI / n) + 0.375;
+        const double beta = 0.25 * cosTurn(1, n) + 0.375;
         const double gamma = (0.625 - beta * beta) / n;
         e = 1.0 / (n + 3.0 / (8.0 * gamma));
     }
@@ -146,7 +157,7 @@ void loopSmooth(const VertexRing& ring, RingWeights& w) {
 
 // Loop's tangents at a crease: along it, (3/2)(first − last); across it, into the faces between
 // its first and last edge, scaled to match the interior tangents' lengths on a regular mesh.
-void loopCreaseTangents(const VertexRing& ring, const CreaseEnds& ends, RingWeights& w) {
+void loopCreaseTangents(const CreaseEnds& ends, RingWeights& w) {
     w.edge[kU][ends.first] = 1.5;
     w.edge[kU][ends.last] = -1.5;
     const int interior = ends.last - ends.first - 1;
@@ -166,12 +177,11 @@ void loopCreaseTangents(const VertexRing& ring, const CreaseEnds& ends, RingWeig
         edge[ends.first + 1] = root3;
         edge[ends.first + 2] = root3;
     } else {
-        const double theta = M_PI / (interior + 1);
-        edge[ends.first] = -3.0 * std::sin(theta);
-        edge[ends.last] = -3.0 * std::sin(theta);
-        for (int i = 1; i <= interior; ++i) edge[ends.first + i] = -6.0 * (std::cos(theta) - 1.0) * std::sin(i * theta);
+        const int k = 2 * (interior + 1);  // θ = π/(interior + 1): sin iθ = sinTurn(i, k)
+        edge[ends.first] = -3.0 * sinTurn(1, k);
+        edge[ends.last] = -3.0 * sinTurn(1, k);
+        for (int i = 1; i <= interior; ++i) edge[ends.first + i] = -6.0 * (cosTurn(1, k) - 1.0) * sinTurn(i, k);
     }
-    (void)ring;
 }
 
 bool hasRing(const VertexRing& ring) { return !ring.faces.empty() && ring.edges.size() >= 2; }
@@ -204,7 +214,7 @@ void loopLimit(const LimitVertex& vertex, LimitMask& out) {
     } else {
         const CreaseEnds ends = creaseEnds(ring);
         creasePosition(ends, w);
-        loopCreaseTangents(ring, ends, w);
+        loopCreaseTangents(ends, w);
     }
     w.writeTo(ring, out);
 }
@@ -216,7 +226,7 @@ void bilinearLimit(const LimitVertex& vertex, LimitMask& out) {
     if (!hasRing(ring) || vertex.rule == VertexRule::Corner) {
         cornerMasks(ring, 1.0, w);
     } else if (vertex.rule == VertexRule::Crease) {
-        loopCreaseTangents(ring, creaseEnds(ring), w);
+        loopCreaseTangents(creaseEnds(ring), w);
     } else if (ring.faces.size() == ring.edges.size()) {
         loopSmoothTangents(ring, w);
     } else {
