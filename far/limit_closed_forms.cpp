@@ -25,26 +25,23 @@ CreaseEnds creaseEnds(const VertexRing& ring) {
     return ends;
 }
 
-// Weights per ring slot: the vertex, each edge neighbour, each face's opposite corner; then
-// written into the mask in that order (merging vertices that appear twice).
+// The weights of one mask by ring slot, written straight into the mask: the vertex, edge
+// neighbour i, face i's opposite corner (LimitMask::startRing's layout).
 struct RingWeights {
-    double vertex[3] = {0, 0, 0};
-    std::vector<double> edge[3], face[3];  // per output (position, dU, dV), per ring slot
+    double* edge[3];  // per output (position, dU, dV), per ring edge
+    double* face[3];  // per output, per ring face
+    double& vertex(int k) { return (*channels_[k])[0]; }
 
-    explicit RingWeights(const VertexRing& ring) {
+    RingWeights(const VertexRing& ring, LimitMask& out) : channels_{&out.position, &out.du, &out.dv} {
+        out.startRing(ring);
         for (int k = 0; k < 3; ++k) {
-            edge[k].assign(ring.edges.size(), 0.0);
-            face[k].assign(ring.faces.size(), 0.0);
+            edge[k] = channels_[k]->data() + 1;
+            face[k] = edge[k] + ring.edges.size();
         }
     }
-    void writeTo(const VertexRing& ring, LimitMask& out) const {
-        out.add(ring.vertex, vertex[0], vertex[1], vertex[2]);
-        for (std::size_t i = 0; i < ring.edges.size(); ++i)
-            out.add(ring.neighbours[i], edge[0][i], edge[1][i], edge[2][i]);
-        for (std::size_t i = 0; i < ring.faces.size(); ++i)
-            if (face[0][i] != 0.0 || face[1][i] != 0.0 || face[2][i] != 0.0)
-                out.add(ring.opposite[i], face[0][i], face[1][i], face[2][i]);
-    }
+
+private:
+    std::vector<double>* channels_[3];
 };
 
 constexpr int kPosition = 0, kU = 1, kV = 2;
@@ -63,16 +60,16 @@ double sinTurn(int i, int n) { return cosTurn(4 * i - n, 4 * n); }  // sin x = c
 // A corner: the vertex itself; the tangents along its first two edges (the first face's sides),
 // scaled by `scale`.
 void cornerMasks(const VertexRing& ring, double scale, RingWeights& w) {
-    w.vertex[kPosition] = 1.0;
+    w.vertex(kPosition) = 1.0;
     if (ring.edges.size() < 2) return;  // an isolated vertex: no tangent
-    w.vertex[kU] = w.vertex[kV] = -scale;
+    w.vertex(kU) = w.vertex(kV) = -scale;
     w.edge[kU][0] = scale;
     w.edge[kV][1] = scale;
 }
 
 // The crease's limit point: the cubic B-spline of its crease curve, (1, 4, 1)/6.
 void creasePosition(const CreaseEnds& ends, RingWeights& w) {
-    w.vertex[kPosition] = 4.0 / 6.0;
+    w.vertex(kPosition) = 4.0 / 6.0;
     w.edge[kPosition][ends.first] += 1.0 / 6.0;
     w.edge[kPosition][ends.last] += 1.0 / 6.0;
 }
@@ -80,7 +77,7 @@ void creasePosition(const CreaseEnds& ends, RingWeights& w) {
 void catmullClarkSmooth(const VertexRing& ring, RingWeights& w) {
     const int n = int(ring.faces.size());
     const double f = 1.0 / (n * (n + 5.0)), e = 4.0 * f;
-    w.vertex[kPosition] = 1.0 - n * (e + f);
+    w.vertex(kPosition) = 1.0 - n * (e + f);
     const double cosTheta = cosTurn(1, n);
     const double lambda = 5.0 / 16.0 + (cosTheta + cosTurn(1, 2 * n) * std::sqrt(2.0 * (9.0 + cosTheta))) / 16.0;
     const double faceScale = 1.0 / (4.0 * lambda - 1.0);
@@ -108,11 +105,11 @@ void catmullClarkCrease(const VertexRing& ring, RingWeights& w) {
     auto& edge = w.edge[kV];
     auto& face = w.face[kV];
     if (interior == 0) {  // one face: the mean of the crease's two edges
-        w.vertex[kV] = -6.0;
+        w.vertex(kV) = -6.0;
         edge[ends.first] += 3.0;
         edge[ends.last] += 3.0;
     } else if (interior == 1) {
-        w.vertex[kV] = -4.0 / 6.0;
+        w.vertex(kV) = -4.0 / 6.0;
         edge[ends.first] = -1.0 / 6.0;
         edge[ends.first + 1] = 4.0 / 6.0;
         edge[ends.last] = -1.0 / 6.0;
@@ -122,7 +119,7 @@ void catmullClarkCrease(const VertexRing& ring, RingWeights& w) {
         const int k = interior + 1;
         const double cosTheta = cosTurn(1, 2 * k), sinTheta = sinTurn(1, 2 * k);  // θ = π/k
         const double d = 1.0 / (k * (3.0 + cosTheta)), r = (cosTheta + 1.0) / sinTheta;
-        w.vertex[kV] = 4.0 * r * (cosTheta - 1.0) * d;
+        w.vertex(kV) = 4.0 * r * (cosTheta - 1.0) * d;
         edge[ends.first] = -r * (1.0 + 2.0 * cosTheta) * d;
         edge[ends.last] = -r * (1.0 + 2.0 * cosTheta) * d;
         face[ends.first] = sinTheta * d;
@@ -150,7 +147,7 @@ void loopSmooth(const VertexRing& ring, RingWeights& w) {
         const double gamma = (0.625 - beta * beta) / n;
         e = 1.0 / (n + 3.0 / (8.0 * gamma));
     }
-    w.vertex[kPosition] = 1.0 - n * e;
+    w.vertex(kPosition) = 1.0 - n * e;
     for (std::size_t i = 0; i < ring.edges.size(); ++i) w.edge[kPosition][i] = e;
     loopSmoothTangents(ring, w);
 }
@@ -163,15 +160,15 @@ void loopCreaseTangents(const CreaseEnds& ends, RingWeights& w) {
     const int interior = ends.last - ends.first - 1;
     auto& edge = w.edge[kV];
     if (interior == 0) {
-        w.vertex[kV] = -6.0;
+        w.vertex(kV) = -6.0;
         edge[ends.first] += 3.0;
         edge[ends.last] += 3.0;
     } else if (interior == 1) {
-        w.vertex[kV] = -3.0;
+        w.vertex(kV) = -3.0;
         edge[ends.first + 1] = 3.0;
     } else if (interior == 2) {
         const double root3 = std::sqrt(3.0);
-        w.vertex[kV] = -root3;
+        w.vertex(kV) = -root3;
         edge[ends.first] = -root3 / 2;
         edge[ends.last] = -root3 / 2;
         edge[ends.first + 1] = root3;
@@ -190,7 +187,7 @@ bool hasRing(const VertexRing& ring) { return !ring.faces.empty() && ring.edges.
 
 void catmullClarkLimit(const LimitVertex& vertex, LimitMask& out) {
     const VertexRing& ring = vertex.ring;
-    RingWeights w(ring);
+    RingWeights w(ring, out);
     const bool smooth = vertex.rule == VertexRule::Smooth || vertex.rule == VertexRule::Dart;
     if (!hasRing(ring) || vertex.rule == VertexRule::Corner || (smooth && ring.faces.size() == 2))
         cornerMasks(ring, 1.0, w);
@@ -200,12 +197,12 @@ void catmullClarkLimit(const LimitVertex& vertex, LimitMask& out) {
         cornerMasks(ring, 1.0, w);  // a smooth rule without a closed fan (non-manifold): stays put
     else
         catmullClarkCrease(ring, w);
-    w.writeTo(ring, out);
+    out.finishRing();
 }
 
 void loopLimit(const LimitVertex& vertex, LimitMask& out) {
     const VertexRing& ring = vertex.ring;
-    RingWeights w(ring);
+    RingWeights w(ring, out);
     const bool smooth = vertex.rule == VertexRule::Smooth || vertex.rule == VertexRule::Dart;
     if (!hasRing(ring) || vertex.rule == VertexRule::Corner || (smooth && ring.faces.size() != ring.edges.size())) {
         cornerMasks(ring, 3.0, w);
@@ -216,13 +213,13 @@ void loopLimit(const LimitVertex& vertex, LimitMask& out) {
         creasePosition(ends, w);
         loopCreaseTangents(ends, w);
     }
-    w.writeTo(ring, out);
+    out.finishRing();
 }
 
 void bilinearLimit(const LimitVertex& vertex, LimitMask& out) {
     const VertexRing& ring = vertex.ring;
-    RingWeights w(ring);
-    w.vertex[kPosition] = 1.0;
+    RingWeights w(ring, out);
+    w.vertex(kPosition) = 1.0;
     if (!hasRing(ring) || vertex.rule == VertexRule::Corner) {
         cornerMasks(ring, 1.0, w);
     } else if (vertex.rule == VertexRule::Crease) {
@@ -232,7 +229,7 @@ void bilinearLimit(const LimitVertex& vertex, LimitMask& out) {
     } else {
         cornerMasks(ring, 1.0, w);
     }
-    w.writeTo(ring, out);
+    out.finishRing();
 }
 
 bool ringFacesHave(const LimitVertex& vertex, int corners) {

@@ -4,6 +4,7 @@
 #include "far/internal/limit_table.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <stdexcept>
 
@@ -55,7 +56,15 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
         LimitMask mask;
         LimitMaskCache cache;
         LimitStencilTableD& part = built[k];
-        for (int v = split(k); v < split(k + 1); ++v) {
+        const int first = split(k), last = split(k + 1);
+        // At most the vertex, its edge neighbours and its faces' opposite corners per stencil.
+        const std::size_t bound = std::size_t(last - first) + (level.vertEdgeOffsets[last] - level.vertEdgeOffsets[first]) +
+                                  (level.vertFaceOffsets[last] - level.vertFaceOffsets[first]);
+        part.sizes.reserve(last - first);
+        part.offsets.reserve(last - first);
+        part.indices.reserve(bound);
+        part.weights.reserve(3 * bound);
+        for (int v = first; v < last; ++v) {
             orderVertexRing(level, v, starts ? starts->startFace(v) : -1, ring);
             mask.clear();
             rules.limitMask(LimitVertex{level, options, ring, limitRule(level, ring)}, cache, mask);
@@ -63,31 +72,25 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
         }
     });
     LimitStencilTableD table;
-    table.numSourceVertices = n;
     if (parts == 1) {
-        table.sizes = std::move(built[0].sizes);
-        table.offsets = std::move(built[0].offsets);
-        table.indices = std::move(built[0].indices);
-        table.weights = std::move(built[0].weights);
+        table = std::move(built[0]);
     } else {
         for (const LimitStencilTableD& part : built) append(part, table);
     }
+    table.numSourceVertices = n;
     return table;
 }
 
-LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
-                                        std::size_t maxBytes) {
-    LimitStencilTableD out;
-    out.numSourceVertices = inner.numSourceVertices;
-    const int n = limit.numStencils();
-    out.sizes.reserve(n);
-    out.offsets.reserve(n);
-    std::vector<int> slot(inner.numSourceVertices, -1);
-    const std::size_t bytesPerEntry = sizeof(int) + 3 * sizeof(double);
-    const std::size_t fixedBytes = std::size_t(n) * 2 * sizeof(int);
-    for (int i = 0; i < n; ++i) {
-        const int first = int(out.indices.size());
-        out.offsets.push_back(first);
+namespace {
+
+// Stencils [first, last) of limit ∘ inner into `out`; `entries` counts every part's entries so
+// that all of them together stop at `maxEntries`.
+void composeRange(const LimitStencilTableD& limit, const StencilTableD& inner, int first, int last,
+                  std::atomic<std::size_t>& entries, std::size_t maxEntries, LimitStencilTableD& out) {
+    std::vector<int> slot(inner.numSourceVertices, -1);  // where a source sits in the current stencil
+    for (int i = first; i < last; ++i) {
+        const int start = int(out.indices.size());
+        out.offsets.push_back(start);
         for (int k = 0; k < limit.sizes[i]; ++k) {
             const int entry = limit.offsets[i] + k, s = limit.indices[entry];
             const double* w = limit.weights.data() + 3 * std::size_t(entry);
@@ -105,11 +108,35 @@ LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const S
                 o[2] += w[2] * x;
             }
         }
-        for (std::size_t k = first; k < out.indices.size(); ++k) slot[out.indices[k]] = -1;
-        out.sizes.push_back(int(out.indices.size()) - first);
-        if (out.indices.size() >= std::size_t(INT32_MAX) || fixedBytes + out.indices.size() * bytesPerEntry > maxBytes)
-            throw std::length_error("composed limit stencils pass their budget");
+        for (std::size_t k = start; k < out.indices.size(); ++k) slot[out.indices[k]] = -1;
+        const int size = int(out.indices.size()) - start;
+        out.sizes.push_back(size);
+        if (entries.fetch_add(size) + size > maxEntries) throw std::length_error("composed limit stencils pass their budget");
     }
+}
+
+}  // namespace
+
+LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
+                                        std::size_t maxBytes) {
+    const int n = limit.numStencils();
+    const int parts = std::max(1, std::min(tbb::this_task_arena::max_concurrency(), n / kMinVerticesPerPart));
+    // Bytes per entry (an index, three weights), twice over while parts are joined.
+    const std::size_t perEntry = (parts > 1 ? 2 : 1) * (sizeof(int) + 3 * sizeof(double));
+    const std::size_t fixed = std::size_t(n) * 2 * sizeof(int);
+    if (fixed > maxBytes) throw std::length_error("composed limit stencils pass their budget");
+    const std::size_t maxEntries = std::min<std::size_t>((maxBytes - fixed) / perEntry, INT32_MAX);
+    auto split = [&](int k) { return int(std::int64_t(n) * k / parts); };
+    std::atomic<std::size_t> entries{0};
+    std::vector<LimitStencilTableD> built(parts);
+    tbb::parallel_for(0, parts, [&](int k) { composeRange(limit, inner, split(k), split(k + 1), entries, maxEntries, built[k]); });
+    LimitStencilTableD out;
+    if (parts == 1) {
+        out = std::move(built[0]);
+    } else {
+        for (const LimitStencilTableD& part : built) append(part, out);
+    }
+    out.numSourceVertices = inner.numSourceVertices;
     return out;
 }
 

@@ -16,17 +16,21 @@ struct LimitData {
     std::vector<Vec3> position, du, dv;
 };
 
+// Tangents are accumulated relative to the stencil's first source, Σ w_k (s_k − s_0), which their
+// weights summing to 0 allows: the data's magnitude then no longer multiplies the weights'
+// rounding (docs/limit.md, "Precision").
 inline LimitData applyLimit(const LimitStencilTable& table, const std::vector<float>& xyz) {
     LimitData out;
     for (int i = 0; i < table.numStencils(); ++i) {
         Vec3 p{0, 0, 0}, u{0, 0, 0}, v{0, 0, 0};
         const float* w = table.weightsOf(i);
+        const float* s0 = xyz.data() + 3 * std::size_t(table.indices[table.offsets[i]]);
         for (int k = 0; k < table.size(i); ++k) {
             const float* s = xyz.data() + 3 * std::size_t(table.indices[table.offsets[i] + k]);
             for (int c = 0; c < 3; ++c) {
                 p[c] += double(w[3 * k]) * s[c];
-                u[c] += double(w[3 * k + 1]) * s[c];
-                v[c] += double(w[3 * k + 2]) * s[c];
+                u[c] += double(w[3 * k + 1]) * (double(s[c]) - s0[c]);
+                v[c] += double(w[3 * k + 2]) * (double(s[c]) - s0[c]);
             }
         }
         out.position.push_back(p);

@@ -201,6 +201,49 @@ TEST(LimitStencils, ClosedShapesNormalsPointAway) {
     }
 }
 
+// A vertex and its vertex point one level down are the same point of the limit surface, with the
+// same tangent plane (on the same side of a crease): the masks agree with the refinement rules,
+// independently of OpenSubdiv. Not where OpenSubdiv's closed forms are themselves approximate
+// (docs/limit.md, "Where the closed forms are not the exact limit"): semi-sharp features, darts,
+// and the cross-crease tangent at irregular Catmull-Clark crease vertices.
+TEST(LimitStencils, VertexPointsKeepTheirLimit) {
+    for (const auto& [mesh, scheme] : {std::pair{"osd/catmark_cube.obj", Scheme::CatmullClark},
+                                       std::pair{"osd/catmark_nonquads.obj", Scheme::CatmullClark},
+                                       std::pair{"osd/catmark_edgecorner.obj", Scheme::CatmullClark},
+                                       std::pair{"osd/catmark_inf_crease0.obj", Scheme::CatmullClark},
+                                       std::pair{"osd/loop_icos_infsharp.obj", Scheme::Loop},
+                                       std::pair{"osd/loop_xord_interior.obj", Scheme::Loop},
+                                       std::pair{"osd/loop_triangle_edgeonly.obj", Scheme::Loop},
+                                       std::pair{"osd/catmark_xord_boundary.obj", Scheme::SchaeferWarren}}) {
+        Options options;
+        options.scheme = scheme;
+        const RefinedMesh r = refineMesh(mesh, 3, options);
+        const double diagonal = boundingBoxDiagonal(r.mesh.positions);
+        for (int L = 1; L < 3; ++L) {
+            const LimitData parent = applyLimit(r.refiner->limitStencils(L), r.positions[L]);
+            const LimitData child = applyLimit(r.refiner->limitStencils(L + 1), r.positions[L + 1]);
+            const Topology& t = r.refiner->level(L);
+            const int firstVertexPoint = r.refiner->level(L + 1).numVertices - t.numVertices;
+            for (int v = 0; v < t.numVertices; ++v) {
+                const int c = firstVertexPoint + v;
+                int sharpEdges = 0;
+                bool semiSharp = t.vertSharpness[v] > 0 && t.vertSharpness[v] < kInfiniteSharpness;
+                for (int e : t.edgesOfVertex(v)) {
+                    sharpEdges += t.edgeSharpness[e] > 0 ? 1 : 0;
+                    semiSharp = semiSharp || (t.edgeSharpness[e] > 0 && t.edgeSharpness[e] < kInfiniteSharpness);
+                }
+                if (semiSharp || sharpEdges == 1) continue;
+                EXPECT_LE(distance(parent.position[v], child.position[c]), 1e-6 * diagonal) << mesh << " level " << L << " vertex " << v;
+                if (t.vertSharpness[v] > 0 || sharpEdges > 2 || (t.vertFlags[v] & kVertexNonManifold)) continue;  // corners
+                const bool regularCrease = t.vertexEdgeCount(v) == ((t.vertFlags[v] & kVertexBoundary) ? 3 : 4);
+                if (sharpEdges == 2 && scheme != Scheme::Loop && !regularCrease) continue;
+                EXPECT_LE(angleBetween(cross(parent.du[v], parent.dv[v]), cross(child.du[c], child.dv[c])), 1e-3)
+                    << mesh << " level " << L << " vertex " << v;
+            }
+        }
+    }
+}
+
 // A last level built with its faces only is completed for the call: the same table as from a
 // full level, and the Refiner is left as it was.
 TEST(LimitStencils, FacesOnlyLevelGivesTheSameTable) {

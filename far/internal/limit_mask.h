@@ -59,6 +59,42 @@ public:
     }
     int size() const { return int(indices.size()); }
 
+    // The closed forms' layout, every weight 0: the vertex, then ring.neighbours, then
+    // ring.opposite (slots 0, 1 + i, 1 + edges + i), to be written by slot.
+    void startRing(const VertexRing& ring) {
+        clear();
+        indices.push_back(ring.vertex);
+        indices.insert(indices.end(), ring.neighbours.begin(), ring.neighbours.end());
+        indices.insert(indices.end(), ring.opposite.begin(), ring.opposite.end());
+        position.assign(indices.size(), 0.0);
+        du.assign(indices.size(), 0.0);
+        dv.assign(indices.size(), 0.0);
+    }
+    // After startRing: merges the slots of a vertex that appears twice and drops slots that weigh
+    // nothing, keeping the first-appearance order.
+    void finishRing() {
+        int kept = 0;
+        for (int k = 0; k < size(); ++k) {
+            int j = 0;
+            while (j < kept && indices[j] != indices[k]) ++j;
+            if (j < kept) {
+                position[j] += position[k];
+                du[j] += du[k];
+                dv[j] += dv[k];
+            } else if (k == 0 || position[k] != 0.0 || du[k] != 0.0 || dv[k] != 0.0) {
+                indices[kept] = indices[k];
+                position[kept] = position[k];
+                du[kept] = du[k];
+                dv[kept] = dv[k];
+                ++kept;
+            }
+        }
+        indices.resize(kept);
+        position.resize(kept);
+        du.resize(kept);
+        dv.resize(kept);
+    }
+
     std::vector<int> indices;
     std::vector<double> position, du, dv;
 };
