@@ -1,6 +1,9 @@
 // The limit loop, shared by the serial and threaded evaluators (and mirrored in GLSL by
 // shaders/limit_eval.comp): one pass over each stencil's support gathers the limit position and
-// both tangents, and the unit normal is their normalised cross product. Where the tangents are
+// both tangents, and the unit normal is their normalised cross product. The tangents are summed
+// relative to the stencil's first source s_0, sum_k w_k (s_k - s_0), equal since their weights sum
+// to 0: the weights' rounding then multiplies distances within the stencil, not the coordinates
+// (docs/limit.md, "Precision"). Where the tangents are
 // degenerate (|dU x dV| <= kDegenerateSine |dU| |dV|, e.g. both along one straight boundary at a
 // corner) the normal is the level's area-weighted face normal at that vertex (kernels/
 // mesh_normal_kernel.h) when a MeshNormalTable is given, else (0, 0, 0); docs/limit_evaluation.md.
@@ -80,13 +83,15 @@ inline void evalLimitFixed(const float* src, int srcStride, const LimitStencilAr
         const int first = t.offsets[i], n = t.offsets[i + 1] - first;
         const int* idx = t.indices + first;
         const float* w = t.weights + t.weightOffsets[i];
+        const float* s0 = n > 0 ? src + static_cast<long>(idx[0]) * srcStride : src;
         for (int k = 0; k < n; ++k, w += 3) {
             const float* s = src + static_cast<long>(idx[k]) * srcStride;
             const float wp = w[0], wu = w[1], wv = w[2];
             for (int c = 0; c < Width; ++c) {
+                const float d = s[c] - s0[c];
                 p[c] += wp * s[c];
-                u[c] += wu * s[c];
-                v[c] += wv * s[c];
+                u[c] += wu * d;
+                v[c] += wv * d;
             }
         }
         storeIfWanted(o.position, i, p, Width);
@@ -99,8 +104,8 @@ inline void evalLimitFixed(const float* src, int srcStride, const LimitStencilAr
 }
 
 #if defined(__SSE2__)
-// Width 3 with x, y, z in one SSE register per sum: per entry three multiplies and three adds
-// instead of nine of each, and the normal in registers too. Lane by lane these are the scalar
+// Width 3 with x, y, z in one SSE register per sum: per entry three multiplies, three adds and a
+// subtraction instead of nine, nine and three, and the normal in registers too. Lane by lane these are the scalar
 // code's float operations in the same order (SSE2 has no fused multiply-add; sqrt and division
 // are IEEE), so the results are bitwise those of the generic loop and limitNormal.
 // Elements are only 4-byte aligned: the 8-byte moves are the unaligned-typed ones.
@@ -143,11 +148,13 @@ inline void evalLimitFixed<3>(const float* src, int srcStride, const LimitStenci
         const int first = t.offsets[i], n = t.offsets[i + 1] - first;
         const int* idx = t.indices + first;
         const float* w = t.weights + t.weightOffsets[i];
+        const __m128 s0 = n > 0 ? load3(src + static_cast<long>(idx[0]) * srcStride) : _mm_setzero_ps();
         for (int k = 0; k < n; ++k, w += 3) {
             const __m128 s = load3(src + static_cast<long>(idx[k]) * srcStride);
+            const __m128 d = _mm_sub_ps(s, s0);
             p = _mm_add_ps(p, _mm_mul_ps(_mm_set1_ps(w[0]), s));
-            u = _mm_add_ps(u, _mm_mul_ps(_mm_set1_ps(w[1]), s));
-            v = _mm_add_ps(v, _mm_mul_ps(_mm_set1_ps(w[2]), s));
+            u = _mm_add_ps(u, _mm_mul_ps(_mm_set1_ps(w[1]), d));
+            v = _mm_add_ps(v, _mm_mul_ps(_mm_set1_ps(w[2]), d));
         }
         if (o.position.data) store3(o.position.data + static_cast<long>(i) * o.position.stride, p);
         if (o.du.data) store3(o.du.data + static_cast<long>(i) * o.du.stride, u);

@@ -1,6 +1,7 @@
 // GLSL mirror of kernels/limit_kernel.h: one invocation per limit stencil gathers its support
 // once, weighing each source with the entry's (position, dU, dV) triple
-// weights[weightOffsets[i] + 3k + 0, 1, 2], and writes the outputs OUTPUTS selects; the normal is
+// weights[weightOffsets[i] + 3k + 0, 1, 2] (the tangents relative to the first source, as the
+// host), and writes the outputs OUTPUTS selects; the normal is
 // normalize(dU x dV), or where the tangents are parallel (sine below DEGENERATE_SINE) the
 // area-weighted face normal of the fallback table at vertex i (as shaders/mesh_normals.comp), or
 // (0, 0, 0) without one. Compiled to SPIR-V at build time and embedded in quadtri_vulkan.
@@ -67,14 +68,16 @@ void main() {
     const int first = offsets[i];
     const int n = offsets[i + 1u] - first;
     int w = weightOffsets[i];
+    const uint s0 = n > 0 ? pc.srcOffset + uint(indices[first]) * uint(SRC_STRIDE) : 0u;
     for (int k = 0; k < n; ++k, w += 3) {
         const uint s = pc.srcOffset + uint(indices[first + k]) * uint(SRC_STRIDE);
         const float wp = weights[w], wu = weights[w + 1], wv = weights[w + 2];
         for (int c = 0; c < LENGTH; ++c) {
             const float x = src[s + uint(c)];
+            const float d = x - src[s0 + uint(c)];
             p[c] += wp * x;
-            u[c] += wu * x;
-            v[c] += wv * x;
+            u[c] += wu * d;
+            v[c] += wv * d;
         }
     }
     for (int c = 0; c < LENGTH; ++c) {

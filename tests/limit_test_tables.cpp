@@ -79,11 +79,13 @@ void referenceLimit(const LimitStencilTable& t, const std::vector<float>& src, c
     for (int i = 0; i < n; ++i)
         for (int k = 0; k < t.size(i); ++k) {
             const float* s = &src[d.offset + std::size_t(t.indices[t.offsets[i] + k]) * d.stride];
+            const float* s0 = &src[d.offset + std::size_t(t.indices[t.offsets[i]]) * d.stride];
             const float* wk = t.weightsOf(i) + 3 * k;
             for (int c = 0; c < w; ++c) {
+                const Real diff = Real(s[c]) - Real(s0[c]);
                 position[std::size_t(i) * w + c] += Real(wk[0]) * Real(s[c]);
-                du[std::size_t(i) * w + c] += Real(wk[1]) * Real(s[c]);
-                dv[std::size_t(i) * w + c] += Real(wk[2]) * Real(s[c]);
+                du[std::size_t(i) * w + c] += Real(wk[1]) * diff;
+                dv[std::size_t(i) * w + c] += Real(wk[2]) * diff;
             }
         }
 }

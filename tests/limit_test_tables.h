@@ -27,8 +27,9 @@ struct CornerLevel {
 CornerLevel cornerLevel(int level);
 bool isDegenerateCorner(int v);
 
-// The plain loop over the table's entries in the order the kernel documents, in float (what
-// every evaluator must reproduce) or double (the exact value).
+// The plain loop over the table's entries in the order the kernel documents (tangents relative to
+// the stencil's first source), in float (what every evaluator must reproduce) or double (the
+// exact value).
 template <class Real>
 void referenceLimit(const LimitStencilTable& t, const std::vector<float>& src, const BufferDescriptor& d,
                     std::vector<Real>& position, std::vector<Real>& du, std::vector<Real>& dv);
