@@ -94,15 +94,18 @@ std::string MatchResult::describe() const {
     return s.str();
 }
 
-MatchResult matchPositions(const std::vector<float>& a, const std::vector<float>& b, double tolerance) {
+MatchResult matchPositions(const std::vector<float>& a, const std::vector<float>& b, double tolerance,
+                           std::vector<int>* partnerOfA) {
     MatchResult m;
     m.numA = int(a.size() / 3);
     m.numB = int(b.size() / 3);
     CellGrid grid(b, 2.0 * tolerance);
     std::vector<char> used(m.numB, 0);
+    if (partnerOfA) partnerOfA->assign(std::size_t(m.numA), -1);
     for (int i = 0; i < m.numA; ++i) {
         double d = 0;
         const int j = grid.nearestUnused(&a[3 * size_t(i)], tolerance, used, &d);
+        if (partnerOfA) (*partnerOfA)[std::size_t(i)] = j;
         if (j < 0) {
             ++m.unmatched;
             continue;
@@ -112,6 +115,25 @@ MatchResult matchPositions(const std::vector<float>& a, const std::vector<float>
     }
     m.ok = m.numA == m.numB && m.unmatched == 0;
     return m;
+}
+
+double maxNormalAngle(const std::vector<float>& aPositions, const std::vector<float>& aNormals,
+                      const std::vector<float>& bPositions, const std::vector<float>& bNormals, double tolerance) {
+    std::vector<int> partner;
+    if (!matchPositions(aPositions, bPositions, tolerance, &partner).ok) return std::numeric_limits<double>::infinity();
+    double worst = 0;
+    for (std::size_t i = 0; i < partner.size(); ++i) {
+        const float* n = &aNormals[3 * i];
+        const float* m = &bNormals[3 * std::size_t(partner[i])];
+        double dot = 0, cross2 = 0;
+        for (int c = 0; c < 3; ++c) dot += double(n[c]) * m[c];
+        for (int c = 0; c < 3; ++c) {
+            const double x = double(n[(c + 1) % 3]) * m[(c + 2) % 3] - double(n[(c + 2) % 3]) * m[(c + 1) % 3];
+            cross2 += x * x;
+        }
+        worst = std::max(worst, std::atan2(std::sqrt(cross2), dot));
+    }
+    return worst;
 }
 
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {

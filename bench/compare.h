@@ -16,8 +16,15 @@ struct MatchResult {
 };
 
 // a, b: xyz triples. Every vertex of a must find a distinct vertex of b within `tolerance`
-// (absolute), and the counts must be equal.
-MatchResult matchPositions(const std::vector<float>& a, const std::vector<float>& b, double tolerance);
+// (absolute), and the counts must be equal. partnerOfA, when given, receives each vertex of a's
+// partner in b (-1 for none).
+MatchResult matchPositions(const std::vector<float>& a, const std::vector<float>& b, double tolerance,
+                           std::vector<int>* partnerOfA = nullptr);
+
+// The largest angle in radians between the normal of a point of a and the normal of its partner
+// in b (matched by position as matchPositions does); infinity if some point has no partner.
+double maxNormalAngle(const std::vector<float>& aPositions, const std::vector<float>& aNormals,
+                      const std::vector<float>& bPositions, const std::vector<float>& bNormals, double tolerance);
 
 // Same order on both sides: the largest coordinate difference.
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b);

@@ -31,6 +31,36 @@ struct OsdFigures {
     double bestEvalMs() const { return std::min({evalCpuPerLevelMs, evalCpuFactorizedMs, evalOmpMs}); }
 };
 
+// Per-frame limit positions and unit normals of the last level's vertices.
+struct LimitFigures {
+    std::size_t tableBytes = 0;           // the factorized LimitStencilTable
+    double limitSerialMs = 0;             // CpuEvaluator::EvalLimitStencils, factorized (control -> limit)
+    double limitThreadedMs = 0;           // TbbEvaluator, the same
+    double levelsThenLimitSerialMs = 0;   // per-level tables to level N, then the limit table over level N
+    double levelsThenLimitThreadedMs = 0;
+    double meshNormalsSerialMs = 0;       // EvalMeshNormals of level N (its positions given)
+    double meshNormalsThreadedMs = 0;
+    std::optional<double> limitVulkanMs;  // VulkanLimitEvaluator, factorized, submit to fence
+    double bestSerialMs() const { return std::min(limitSerialMs, levelsThenLimitSerialMs); }
+    double bestThreadedMs() const { return std::min(limitThreadedMs, levelsThenLimitThreadedMs); }
+};
+
+struct OsdLimitFigures {
+    std::size_t tableBytes = 0;  // Far::LimitStencilTable: sizes, offsets, indices, three weight arrays
+    double evalCpuMs = 0;        // Osd::CpuEvaluator::EvalStencils with du, dv + the normal loop
+    double evalOmpMs = 0;        // Osd::OmpEvaluator, the same
+    double bestMs() const { return std::min(evalCpuMs, evalOmpMs); }
+};
+
+struct LimitCaseResult {
+    std::string mesh;
+    std::string scheme;
+    int level = 0;
+    int points = 0;
+    LimitFigures quadtri;
+    std::optional<OsdLimitFigures> osd;
+};
+
 struct CaseResult {
     std::string mesh;
     std::string scheme;
@@ -45,6 +75,7 @@ struct BenchResult {
     double memcpyGbps1 = 0;
     double memcpyGbps2 = 0;
     std::vector<CaseResult> cases;
+    std::vector<LimitCaseResult> limitCases;
 };
 
 }  // namespace quadtri::bench

@@ -1,6 +1,6 @@
 // quadtri-bench: quadtri against OpenSubdiv on generated tori and a high-valence UV sphere: build time, table bytes and
 // evaluation time per case, checked for agreement first, plus memcpy bandwidth for reference.
-//   quadtri-bench [--quick] [--json FILE]
+//   quadtri-bench [--quick] [--limit] [--json FILE] [--mesh NAME]
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -14,14 +14,17 @@
 
 #include "bench/compare.h"
 #include "bench/figures.h"
+#include "bench/limit_case.h"
 #include "bench/memcpy_bandwidth.h"
 #include "bench/osd_case.h"
+#include "bench/osd_limit_case.h"
 #include "bench/quadtri_case.h"
 #include "bench/report.h"
 #include "bench/sphere.h"
 #include "bench/torus.h"
 #ifdef QUADTRI_BENCH_VULKAN
 #include "bench/vulkan_case.h"
+#include <quadtri/osd/vulkan_context.h>
 #else
 namespace quadtri {
 inline namespace v0 {
@@ -85,6 +88,19 @@ std::vector<CaseSpec> caseList(bool quick) {
     return cases;
 }
 
+// Limit cases: the 100x100 tori, quads under Catmull-Clark and triangles under Loop on both sides
+// (the same schemes OpenSubdiv runs, so that the limit points agree), mixed under Schaefer-Warren
+// quadtri alone; levels 2-4 (--quick: 2).
+std::vector<CaseSpec> limitCaseList(bool quick) {
+    std::vector<CaseSpec> cases;
+    for (int level = 2; level <= (quick ? 2 : 4); ++level) {
+        cases.push_back({torusName(100, TorusFaces::Quads), Scheme::CatmullClark, OsdScheme::Catmark, level});
+        cases.push_back({torusName(100, TorusFaces::Triangles), Scheme::Loop, OsdScheme::Loop, level});
+        cases.push_back({torusName(100, TorusFaces::Mixed), Scheme::SchaeferWarren, std::nullopt, level});
+    }
+    return cases;
+}
+
 std::string schemeName(const CaseSpec& spec) {
     const std::string qt = toString(spec.scheme);
     if (!spec.osd) return qt;
@@ -126,11 +142,43 @@ CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, [[ma
     return result;
 }
 
+LimitCaseResult runLimitCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, VulkanContext* vulkan) {
+    LimitCaseResult result;
+    result.mesh = mesh.name;
+    result.scheme = schemeName(spec);
+    result.level = spec.level;
+    LimitCase qt(mesh, spec.scheme, spec.level);
+    qt.prepare();
+    result.points = qt.numPoints();
+    std::optional<OsdLimitCase> osd;
+    if (spec.osd) {
+        osd.emplace(mesh, *spec.osd, spec.level);
+        osd->prepare();
+        // The same limit points, and the same normals at them (matched by position).
+        const MatchResult match = matchPositions(qt.positions(), osd->positions(), 1e-5 * mesh.boundingBoxDiagonal());
+        if (!match.ok)
+            throw std::runtime_error(mesh.name + " level " + std::to_string(spec.level) +
+                                     ": quadtri's and OpenSubdiv's limit points differ (" + match.describe() + ")");
+        const double normalAngle = maxNormalAngle(qt.positions(), qt.normals(), osd->positions(), osd->normals(),
+                                                  1e-5 * mesh.boundingBoxDiagonal());
+        if (!(normalAngle < 1e-3))
+            throw std::runtime_error(mesh.name + " level " + std::to_string(spec.level) +
+                                     ": quadtri's and OpenSubdiv's limit normals differ by " +
+                                     std::to_string(normalAngle) + " rad");
+        std::cerr << "  limit agrees with OpenSubdiv: " << match.describe() << ", normals within " << normalAngle
+                  << " rad\n";
+    }
+    result.quadtri = qt.measure(reps, vulkan);
+    if (osd) result.osd = osd->measure(reps);
+    return result;
+}
+
 int usage(const char* message) {
     if (message) std::cerr << "quadtri-bench: " << message << "\n";
-    std::cerr << "usage: quadtri-bench [--quick] [--json FILE] [--mesh NAME]\n"
+    std::cerr << "usage: quadtri-bench [--quick] [--limit] [--json FILE] [--mesh NAME]\n"
                  "  --quick      CI-sized run: 100x100 tori at levels 2-3, mixed torus at level 2,\n"
                  "               the 2000-segment spheres at level 1, 3 repetitions, 32 MiB memcpy\n"
+                 "  --limit      only the limit cases (limit positions + normals, mesh normals)\n"
                  "  --json FILE  also write the figures as JSON to FILE\n"
                  "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
                  "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad),\n"
@@ -139,12 +187,13 @@ int usage(const char* message) {
 }
 
 int run(int argc, char** argv) {
-    bool quick = false;
+    bool quick = false, limitOnly = false;
     std::string jsonPath, onlyMesh;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--json") && i + 1 < argc) jsonPath = argv[++i];
         else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) onlyMesh = argv[++i];
+        else if (!std::strcmp(argv[i], "--limit")) limitOnly = true;
         else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return usage(nullptr);
         else return usage((std::string("unknown argument ") + argv[i]).c_str());
     }
@@ -171,12 +220,12 @@ int run(int argc, char** argv) {
 #endif
 
     std::map<std::string, ControlMesh> meshes;
-    std::vector<CaseSpec> cases = caseList(quick);
+    std::vector<CaseSpec> cases = limitOnly ? std::vector<CaseSpec>{} : caseList(quick);
     if (!onlyMesh.empty()) {
         cases.erase(std::remove_if(cases.begin(), cases.end(),
                                    [&](const CaseSpec& c) { return c.mesh != onlyMesh; }),
                     cases.end());
-        if (cases.empty()) return usage(("no case has the mesh " + onlyMesh).c_str());
+        if (cases.empty() && !limitOnly) return usage(("no case has the mesh " + onlyMesh).c_str());
     }
     for (size_t i = 0; i < cases.size(); ++i) {
         const CaseSpec& spec = cases[i];
@@ -184,6 +233,21 @@ int run(int argc, char** argv) {
         const ControlMesh& mesh = meshes.at(spec.mesh);
         std::cerr << "[" << i + 1 << "/" << cases.size() << "] " << mesh.name << " level " << spec.level << "\n";
         result.cases.push_back(runCase(mesh, spec, reps, device));
+    }
+
+    std::vector<CaseSpec> limits = limitCaseList(quick);
+    if (!onlyMesh.empty())
+        limits.erase(std::remove_if(limits.begin(), limits.end(), [&](const CaseSpec& c) { return c.mesh != onlyMesh; }),
+                     limits.end());
+    for (size_t i = 0; i < limits.size(); ++i) {
+        const CaseSpec& spec = limits[i];
+        if (!meshes.count(spec.mesh)) meshes.emplace(spec.mesh, makeMesh(spec.mesh));
+        std::cerr << "[limit " << i + 1 << "/" << limits.size() << "] " << spec.mesh << " level " << spec.level << "\n";
+        try {
+            result.limitCases.push_back(runLimitCase(meshes.at(spec.mesh), spec, reps, device));
+        } catch (const std::logic_error& e) {  // a scheme without limit masks for this mesh yet
+            std::cerr << "  skipped: " << e.what() << "\n";
+        }
     }
 
     printMarkdown(std::cout, result);

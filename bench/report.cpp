@@ -33,6 +33,59 @@ std::string mib(std::size_t bytes) { return ms(double(bytes) / (1 << 20)); }
 std::string ratio(double num, double den) { return den > 0 ? number(num / den, "%.2f") : "–"; }
 std::string ratio(double num, std::optional<double> den) { return den ? ratio(num, *den) : "–"; }
 
+void writeLimitJson(std::ostream& f, const std::vector<LimitCaseResult>& cases) {
+    f << ",\n  \"limit_cases\": [";
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const LimitCaseResult& c = cases[i];
+        const LimitFigures& q = c.quadtri;
+        f << (i ? ",\n" : "\n") << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme)
+          << ", \"level\": " << c.level << ", \"points\": " << c.points << ",\n"
+          << "     \"quadtri\": {\"table_bytes\": " << q.tableBytes << ", \"limit_serial_ms\": " << number(q.limitSerialMs)
+          << ", \"limit_threaded_ms\": " << number(q.limitThreadedMs)
+          << ", \"levels_then_limit_serial_ms\": " << number(q.levelsThenLimitSerialMs)
+          << ", \"levels_then_limit_threaded_ms\": " << number(q.levelsThenLimitThreadedMs)
+          << ", \"mesh_normals_serial_ms\": " << number(q.meshNormalsSerialMs)
+          << ", \"mesh_normals_threaded_ms\": " << number(q.meshNormalsThreadedMs)
+          << ", \"limit_vulkan_ms\": " << json(q.limitVulkanMs) << "},\n     \"osd\": ";
+        if (!c.osd) {
+            f << "null, \"ratio_serial\": null, \"ratio_threaded\": null}";
+            continue;
+        }
+        const OsdLimitFigures& o = *c.osd;
+        f << "{\"table_bytes\": " << o.tableBytes << ", \"eval_cpu_ms\": " << number(o.evalCpuMs)
+          << ", \"eval_omp_ms\": " << number(o.evalOmpMs) << "}, \"ratio_serial\": "
+          << number(o.evalCpuMs / q.bestSerialMs()) << ", \"ratio_threaded\": " << number(o.bestMs() / q.bestThreadedMs())
+          << "}";
+    }
+    f << "\n  ]";
+}
+
+void printLimitMarkdown(std::ostream& out, const std::vector<LimitCaseResult>& cases) {
+    if (cases.empty()) return;
+    out << "\nPer-frame limit positions + unit normals of the last level's vertices (qt: factorized limit table /"
+           " per-level tables then the limit table over the last level; OSD: Far::LimitStencilTable with du, dv"
+           " through Osd::CpuEvaluator / OmpEvaluator, normals in a loop after):\n\n"
+        << "| mesh | scheme | L | points | qt MiB | OSD MiB | qt serial ms (fact. / chain) | qt TBB ms (fact. / chain)"
+           " | OSD CPU / OMP ms | OSD CPU / qt serial | OSD best / qt TBB | mesh normals serial / TBB ms | qt Vulkan ms |\n"
+        << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const LimitCaseResult& c : cases) {
+        const LimitFigures& q = c.quadtri;
+        out << "| " << c.mesh << " | " << c.scheme << " | " << c.level << " | " << c.points << " | " << mib(q.tableBytes)
+            << " | " << (c.osd ? mib(c.osd->tableBytes) : "–") << " | " << ms(q.limitSerialMs) << " / "
+            << ms(q.levelsThenLimitSerialMs) << " | " << ms(q.limitThreadedMs) << " / " << ms(q.levelsThenLimitThreadedMs)
+            << " | ";
+        if (c.osd)
+            out << ms(c.osd->evalCpuMs) << " / " << ms(c.osd->evalOmpMs) << " | " << ratio(c.osd->evalCpuMs, q.bestSerialMs())
+                << " | " << ratio(c.osd->bestMs(), q.bestThreadedMs());
+        else
+            out << "– | – | –";
+        out << " | " << ms(q.meshNormalsSerialMs) << " / " << ms(q.meshNormalsThreadedMs) << " | " << ms(q.limitVulkanMs)
+            << " |\n";
+    }
+}
+
+void printCasesMarkdown(std::ostream& out, const BenchResult& r);
+
 }  // namespace
 
 void writeJson(const std::string& path, const BenchResult& r) {
@@ -61,11 +114,23 @@ void writeJson(const std::string& path, const BenchResult& r) {
           << ", \"eval_cpu_factorized_ms\": " << number(o.evalCpuFactorizedMs)
           << ", \"eval_omp_ms\": " << number(o.evalOmpMs) << ", \"table_bytes\": " << o.tableBytes << "}}";
     }
-    f << "\n  ]\n}\n";
+    f << "\n  ]";
+    writeLimitJson(f, r.limitCases);
+    f << "\n}\n";
     if (!f) throw std::runtime_error("cannot write " + path);
 }
 
 void printMarkdown(std::ostream& out, const BenchResult& r) {
+    if (!r.cases.empty()) printCasesMarkdown(out, r);
+    out << "\nmemcpy (" << (r.memcpyBytes >> 20) << " MiB, bytes read + written): " << number(r.memcpyGbps1, "%.1f")
+        << " GB/s with 1 thread, " << number(r.memcpyGbps2, "%.1f") << " GB/s with 2 threads\n";
+    printLimitMarkdown(out, r.limitCases);
+}
+
+namespace {
+
+// One row per case with the main figures and the OSD/quadtri ratios.
+void printCasesMarkdown(std::ostream& out, const BenchResult& r) {
     const char* threaded = "TBB";
     out << "| mesh | scheme | L | vertices | qt build ms | OSD build ms (per-level / fact.) | build OSD/qt"
         << " | qt MiB | OSD MiB (per-level / fact.) | bytes qt/OSD | qt serial ms | qt " << threaded << " ms"
@@ -93,11 +158,11 @@ void printMarkdown(std::ostream& out, const BenchResult& r) {
         }
         out << " | " << bandwidth << " | " << ms(q.evalVulkanMs) << " / " << ms(q.uploadVulkanMs) << " |\n";
     }
-    out << "\nmemcpy (" << (r.memcpyBytes >> 20) << " MiB, bytes read + written): " << number(r.memcpyGbps1, "%.1f")
-        << " GB/s with 1 thread, " << number(r.memcpyGbps2, "%.1f") << " GB/s with 2 threads\n"
-        << "Last column: the threaded evaluation's compulsory bytes (all levels' table arrays, distinct source "
+    out << "Last column: the threaded evaluation's compulsory bytes (all levels' table arrays, distinct source "
            "vertices and output vertices, 12 bytes each) per second, over the 2-thread memcpy bandwidth; above "
            "100% where the working set stays in cache.\n";
 }
+
+}  // namespace
 
 }  // namespace quadtri::bench

@@ -1,5 +1,7 @@
 #include <quadtri/osd/cpu_evaluator.h>
 
+#include "kernels/limit_kernel.h"
+#include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include "osd/internal/eval_arguments.h"
 
@@ -13,6 +15,27 @@ void CpuEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
         return;
     kernels::evalStencils(src + srcDesc.offset, srcDesc.stride, dst + dstDesc.offset, dstDesc.stride, dstDesc.length,
                           detail::stencilArrays(table), start, end);
+}
+
+void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const MeshNormalTable& table, int start, int end) {
+    if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
+                                          end))
+        return;
+    kernels::evalMeshNormals(src + srcDesc.offset, srcDesc.stride, dst + dstDesc.offset, dstDesc.stride,
+                             detail::meshNormalArrays(table), start, end);
+}
+
+void CpuEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                     const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc,
+                                     float* dstDv, const BufferDescriptor& dvDesc, float* dstNormal,
+                                     const BufferDescriptor& normalDesc, const LimitStencilTable& table,
+                                     const MeshNormalTable* fallback, int start, int end) {
+    detail::HostLimitCall c;
+    if (!detail::hostLimitCall(c, src, srcDesc, dstPosition, positionDesc, dstDu, duDesc, dstDv, dvDesc, dstNormal,
+                               normalDesc, table, fallback, start, end))
+        return;
+    kernels::evalLimitStencils(c.src, srcDesc.stride, srcDesc.length, c.arrays, c.outputs, start, end);
 }
 
 }  // namespace v0

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace quadtri {
 inline namespace v0 {
@@ -20,6 +21,87 @@ bool checkEvalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool d
                                     ") outside the table's " + std::to_string(numStencils) + " stencils");
     if (start == end) return false;
     if (!srcPresent || !dstPresent) throw std::invalid_argument("EvalStencils: null buffer");
+    return true;
+}
+
+namespace {
+
+const char* const kInvalidDescriptor = "invalid BufferDescriptor (need length > 0, stride >= length, offset >= 0)";
+
+void checkRange(const char* call, const char* what, int count, int start, int end) {
+    if (start < 0 || start > end || end > count)
+        throw std::invalid_argument(std::string(call) + ": range [" + std::to_string(start) + ", " +
+                                    std::to_string(end) + ") outside the table's " + std::to_string(count) + " " + what);
+}
+
+}  // namespace
+
+bool checkMeshNormalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
+                              const BufferDescriptor& dstDesc, int numVertices, int start, int& end) {
+    if (end < 0) end = numVertices;
+    if (!srcDesc.isValid() || !dstDesc.isValid())
+        throw std::invalid_argument(std::string("EvalMeshNormals: ") + kInvalidDescriptor);
+    if (srcDesc.length != 3 || dstDesc.length != 3)
+        throw std::invalid_argument("EvalMeshNormals: positions and normals are 3 floats (source length " +
+                                    std::to_string(srcDesc.length) + ", destination length " +
+                                    std::to_string(dstDesc.length) + ")");
+    checkRange("EvalMeshNormals", "vertices", numVertices, start, end);
+    if (start == end) return false;
+    if (!srcPresent || !dstPresent) throw std::invalid_argument("EvalMeshNormals: null buffer");
+    return true;
+}
+
+bool checkLimitArguments(bool srcPresent, const BufferDescriptor& srcDesc, const LimitOutputArgument& position,
+                         const LimitOutputArgument& du, const LimitOutputArgument& dv,
+                         const LimitOutputArgument& normal, int numStencils, int numSources, int fallbackVertices,
+                         int start, int& end) {
+    if (end < 0) end = numStencils;
+    const std::string call = "EvalLimitStencils: ";
+    if (!srcDesc.isValid()) throw std::invalid_argument(call + "source " + kInvalidDescriptor);
+    const std::pair<const char*, const LimitOutputArgument*> outputs[] = {
+        {"position", &position}, {"dU", &du}, {"dV", &dv}, {"normal", &normal}};
+    bool any = false;
+    for (const auto& [name, out] : outputs) {
+        if (!out->present) continue;
+        any = true;
+        if (!out->desc.isValid()) throw std::invalid_argument(call + name + " " + kInvalidDescriptor);
+        if (out != &normal && out->desc.length != srcDesc.length)
+            throw std::invalid_argument(call + "source length " + std::to_string(srcDesc.length) + " differs from " +
+                                        name + " length " + std::to_string(out->desc.length));
+    }
+    if (!any) throw std::invalid_argument(call + "no output (position, dU, dV and normal all null)");
+    if (normal.present && (srcDesc.length != 3 || normal.desc.length != 3))
+        throw std::invalid_argument(call + "normals need 3-float positions and normals (source length " +
+                                    std::to_string(srcDesc.length) + ", normal length " +
+                                    std::to_string(normal.desc.length) + ")");
+    if (fallbackVertices >= 0 && (fallbackVertices != numSources || fallbackVertices != numStencils))
+        throw std::invalid_argument(call + "the fallback MeshNormalTable has " + std::to_string(fallbackVertices) +
+                                    " vertices, the limit table " + std::to_string(numStencils) + " stencils over " +
+                                    std::to_string(numSources) +
+                                    " sources (a fallback needs the table over its level's own vertices)");
+    checkRange("EvalLimitStencils", "stencils", numStencils, start, end);
+    if (start == end) return false;
+    if (!srcPresent) throw std::invalid_argument(call + "null source buffer");
+    return true;
+}
+
+bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                   const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc, float* dstDv,
+                   const BufferDescriptor& dvDesc, float* dstNormal, const BufferDescriptor& normalDesc,
+                   const LimitStencilTable& table, const MeshNormalTable* fallback, int start, int& end) {
+    if (!checkLimitArguments(src != nullptr, srcDesc, {dstPosition != nullptr, positionDesc},
+                                      {dstDu != nullptr, duDesc}, {dstDv != nullptr, dvDesc},
+                                      {dstNormal != nullptr, normalDesc}, table.numStencils(),
+                                      table.numSourceVertices, fallback ? fallback->numVertices : -1, start, end))
+        return false;
+    auto output = [](float* data, const BufferDescriptor& d) {
+        return kernels::LimitOutput{data ? data + d.offset : nullptr, data ? d.stride : 0};
+    };
+    call.src = src + srcDesc.offset;
+    call.arrays = limitArrays(table);
+    if (fallback) call.fallbackArrays = meshNormalArrays(*fallback);
+    call.outputs = {output(dstPosition, positionDesc), output(dstDu, duDesc), output(dstDv, dvDesc),
+                    output(dstNormal, normalDesc), fallback ? &call.fallbackArrays : nullptr};
     return true;
 }
 

@@ -3,6 +3,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "kernels/limit_kernel.h"
+#include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include "osd/internal/eval_arguments.h"
 
@@ -18,6 +20,18 @@ namespace {
 // shorter than two blocks run serially in the calling thread.
 constexpr int kGrain = 2048;
 
+// Runs body(begin, end) over [start, end): serially when the range is under two blocks of `grain`,
+// else in blocks on the caller's arena (each block writes only its own rows).
+template <class Body>
+void forBlocks(int start, int end, int grain, const Body& body) {
+    if (end - start < 2 * grain) {
+        body(start, end);
+        return;
+    }
+    tbb::parallel_for(tbb::blocked_range<int>(start, end, grain),
+                      [&](const tbb::blocked_range<int>& r) { body(r.begin(), r.end()); });
+}
+
 }  // namespace
 
 void TbbEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
@@ -29,14 +43,37 @@ void TbbEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
     const float* s = src + srcDesc.offset;
     float* d = dst + dstDesc.offset;
     const int srcStride = srcDesc.stride, dstStride = dstDesc.stride, width = dstDesc.length;
-    // Too few stencils to be worth splitting: run the kernel here, without spawning.
-    if (end - start < 2 * kGrain) {
-        kernels::evalStencils(s, srcStride, d, dstStride, width, arrays, start, end);
+    forBlocks(start, end, kGrain,
+              [&](int b, int e) { kernels::evalStencils(s, srcStride, d, dstStride, width, arrays, b, e); });
+}
+
+void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const MeshNormalTable& table, int start, int end) {
+    if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
+                                          end))
         return;
-    }
-    // Each block writes only its own destination rows; the tasks run in the caller's arena.
-    tbb::parallel_for(tbb::blocked_range<int>(start, end, kGrain), [&](const tbb::blocked_range<int>& r) {
-        kernels::evalStencils(s, srcStride, d, dstStride, width, arrays, r.begin(), r.end());
+    const kernels::MeshNormalArrays arrays = detail::meshNormalArrays(table);
+    const float* s = src + srcDesc.offset;
+    float* d = dst + dstDesc.offset;
+    // A vertex gathers ~4 faces of 3-4 corners: about the cost of a stencil, so the same grain.
+    forBlocks(start, end, kGrain, [&](int b, int e) {
+        kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, b, e);
+    });
+}
+
+void TbbEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                     const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc,
+                                     float* dstDv, const BufferDescriptor& dvDesc, float* dstNormal,
+                                     const BufferDescriptor& normalDesc, const LimitStencilTable& table,
+                                     const MeshNormalTable* fallback, int start, int end) {
+    detail::HostLimitCall c;
+    if (!detail::hostLimitCall(c, src, srcDesc, dstPosition, positionDesc, dstDu, duDesc, dstDv, dvDesc, dstNormal,
+                               normalDesc, table, fallback, start, end))
+        return;
+    // A limit stencil does three stencils' arithmetic over one support (plus a normal): half the
+    // stencil grain keeps a block's work above TBB's per-task cost with room to balance.
+    forBlocks(start, end, kGrain / 2, [&](int b, int e) {
+        kernels::evalLimitStencils(c.src, srcDesc.stride, srcDesc.length, c.arrays, c.outputs, b, e);
     });
 }
 

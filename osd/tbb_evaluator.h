@@ -2,6 +2,8 @@
 // oneTBB in the caller's task arena (its thread count); no global state.
 #pragma once
 
+#include <quadtri/far/limit_stencil_table.h>
+#include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
 #include <quadtri/osd/buffer_descriptor.h>
 
@@ -16,6 +18,18 @@ public:
     static void EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
                              const BufferDescriptor& dstDesc, const StencilTable& table, int start = 0,
                              int end = -1);
+
+    // Same contract as CpuEvaluator::EvalMeshNormals, bit-identical results.
+    static void EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                const BufferDescriptor& dstDesc, const MeshNormalTable& table, int start = 0,
+                                int end = -1);
+
+    // Same contract as CpuEvaluator::EvalLimitStencils, bit-identical results.
+    static void EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                  const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc,
+                                  float* dstDv, const BufferDescriptor& dvDesc, float* dstNormal,
+                                  const BufferDescriptor& normalDesc, const LimitStencilTable& table,
+                                  const MeshNormalTable* fallback = nullptr, int start = 0, int end = -1);
 };
 
 }  // namespace v0

@@ -1,9 +1,13 @@
-// Argument checking shared by every evaluator's EvalStencils (CpuEvaluator, TbbEvaluator,
-// VulkanEvaluator), so that all of them accept and reject exactly the same calls with the same
-// messages.
+// Argument checking shared by every evaluator's EvalStencils, EvalMeshNormals and
+// EvalLimitStencils (CpuEvaluator, TbbEvaluator, the Vulkan evaluators), so that all of them accept
+// and reject exactly the same calls with the same messages.
 #pragma once
 
+#include <quadtri/far/limit_stencil_table.h>
+#include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
+#include "kernels/limit_kernel.h"
+#include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include <quadtri/osd/buffer_descriptor.h>
 
@@ -20,10 +24,56 @@ namespace detail {
 bool checkEvalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
                         const BufferDescriptor& dstDesc, int numStencils, int start, int& end);
 
+// EvalMeshNormals over a table of `numVertices` vertices: valid descriptors of length 3 on both
+// sides, the range, and (only when the range is not empty) both buffers; end < 0 resolved.
+// Returns false when there is nothing to evaluate.
+bool checkMeshNormalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
+                              const BufferDescriptor& dstDesc, int numVertices, int start, int& end);
+
+// One optional output of EvalLimitStencils: absent (a null pointer or VkBuffer) means not
+// written, and its descriptor is not looked at.
+struct LimitOutputArgument {
+    bool present;
+    const BufferDescriptor& desc;
+};
+
+// EvalLimitStencils: a valid source descriptor and a valid descriptor for every present output,
+// position, dU and dV of the source's length, normals only for 3-float data (normal length 3), at
+// least one output, a fallback table (fallbackVertices >= 0; -1 for none) over the limit table's
+// own sources and stencils, the range, and the source buffer when the range is not empty.
+// Returns false when there is nothing to evaluate.
+bool checkLimitArguments(bool srcPresent, const BufferDescriptor& srcDesc, const LimitOutputArgument& position,
+                         const LimitOutputArgument& du, const LimitOutputArgument& dv,
+                         const LimitOutputArgument& normal, int numStencils, int numSources, int fallbackVertices,
+                         int start, int& end);
+
+// The host evaluators' EvalLimitStencils arguments checked (checkLimitArguments) and turned into
+// what kernels::evalLimitStencils reads (outputs.fallback points into the struct itself, so it is
+// filled in place); returns false when the range is empty.
+struct HostLimitCall {
+    const float* src;
+    kernels::LimitStencilArrays arrays;
+    kernels::MeshNormalArrays fallbackArrays;
+    kernels::LimitOutputs outputs;
+};
+bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                   const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc, float* dstDv,
+                   const BufferDescriptor& dvDesc, float* dstNormal, const BufferDescriptor& normalDesc,
+                   const LimitStencilTable& table, const MeshNormalTable* fallback, int start, int& end);
+
 // The table's arrays as the kernel reads them.
 inline kernels::StencilArrays stencilArrays(const StencilTable& table) {
     return kernels::StencilArrays{table.offsets.data(), table.indices.data(), table.weightOffsets.data(),
                                   table.weights.data()};
+}
+
+inline kernels::LimitStencilArrays limitArrays(const LimitStencilTable& table) {
+    return kernels::LimitStencilArrays{table.offsets.data(), table.indices.data(), table.weightOffsets.data(),
+                                       table.weights.data()};
+}
+
+inline kernels::MeshNormalArrays meshNormalArrays(const MeshNormalTable& table) {
+    return kernels::MeshNormalArrays{table.offsets.data(), table.corners.data()};
 }
 
 }  // namespace detail

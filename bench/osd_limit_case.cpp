@@ -1,0 +1,178 @@
+#include "bench/osd_limit_case.h"
+
+#include <opensubdiv/far/patchTableFactory.h>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/stencilTable.h>
+#include <opensubdiv/far/stencilTableFactory.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefiner.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+#include <opensubdiv/osd/bufferDescriptor.h>
+#include <opensubdiv/osd/cpuEvaluator.h>
+#include <opensubdiv/osd/ompEvaluator.h>
+#include <opensubdiv/sdc/options.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "bench/compare.h"
+#include "bench/timing.h"
+
+namespace quadtri::bench {
+
+namespace Far = OpenSubdiv::Far;
+namespace Osd = OpenSubdiv::Osd;
+namespace Sdc = OpenSubdiv::Sdc;
+
+// As in osd_case.cpp: the Real templates, not the float wrappers whose downcast UBSan rejects.
+using LimitTable = Far::LimitStencilTableReal<float>;
+using LimitFactory = Far::LimitStencilTableFactoryReal<float>;
+
+struct OsdLimitCase::State {
+    const ControlMesh& mesh;
+    OsdScheme scheme;
+    int level;
+    std::vector<float> s, t;  // the locations, per control face in face order
+    std::unique_ptr<const LimitTable> table;
+    std::vector<float> position, du, dv, normal;
+
+    State(const ControlMesh& m, OsdScheme sc, int l) : mesh(m), scheme(sc), level(l) {}
+
+    std::unique_ptr<Far::TopologyRefiner> refiner() const {
+        Far::TopologyDescriptor desc;
+        desc.numVertices = mesh.numVertices;
+        desc.numFaces = mesh.numFaces();
+        desc.numVertsPerFace = mesh.faceSizes.data();
+        desc.vertIndicesPerFace = mesh.faceVerts.data();
+        Sdc::Options sdc;
+        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+        const Sdc::SchemeType type = scheme == OsdScheme::Catmark ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP;
+        std::unique_ptr<Far::TopologyRefiner> r(Factory::Create(desc, Factory::Options(type, sdc)));
+        if (!r) throw std::runtime_error(mesh.name + ": OpenSubdiv refused the topology");
+        return r;
+    }
+
+    // Dyadic locations owning each level vertex once. A quad face (a, b, c, d) owns s, t in
+    // [0, 1) (corner a at (0, 0), b at (1, 0)); the torus's triangles (a, b, c) and (a, c, d) of
+    // quad (i, j) own i + j < n, the second without its first edge (a c, which the first owns).
+    void locations(std::vector<Far::LimitStencilTableFactory::LocationArray>& out) {
+        const int n = 1 << level;
+        std::vector<int> counts;
+        for (int f = 0; f < mesh.numFaces(); ++f) {
+            const std::size_t before = s.size();
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    if (mesh.faceSizes[f] == 3) {
+                        const bool second = f % 2 == 1;
+                        if (i + j >= n || (second && j == 0)) continue;
+                    }
+                    s.push_back(float(i) / float(n));
+                    t.push_back(float(j) / float(n));
+                }
+            counts.push_back(int(s.size() - before));
+        }
+        std::size_t at = 0;
+        for (int f = 0; f < mesh.numFaces(); ++f) {
+            Far::LimitStencilTableFactory::LocationArray a;
+            a.ptexIdx = f;  // one ptex face per quad (Catmark) or triangle (Loop)
+            a.numLocations = counts[f];
+            a.s = s.data() + at;
+            a.t = t.data() + at;
+            at += std::size_t(counts[f]);
+            out.push_back(a);
+        }
+    }
+
+    template <class Evaluator>
+    void eval() {
+        const LimitTable& tb = *table;
+        const Osd::BufferDescriptor xyz(0, 3, 3);
+        Evaluator::EvalStencils(mesh.positions.data(), xyz, position.data(), xyz, du.data(), xyz, dv.data(), xyz,
+                                tb.GetSizes().data(), tb.GetOffsets().data(), tb.GetControlIndices().data(),
+                                tb.GetWeights().data(), tb.GetDuWeights().data(), tb.GetDvWeights().data(), 0,
+                                tb.GetNumStencils());
+        const std::size_t n = position.size() / 3;
+        for (std::size_t i = 0; i < n; ++i) {
+            const float* a = &du[3 * i];
+            const float* b = &dv[3 * i];
+            const float c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+            const float len2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+            const float k = len2 > 0.0f ? 1.0f / std::sqrt(len2) : 0.0f;
+            normal[3 * i] = c[0] * k, normal[3 * i + 1] = c[1] * k, normal[3 * i + 2] = c[2] * k;
+        }
+    }
+};
+
+OsdLimitCase::OsdLimitCase(const ControlMesh& mesh, OsdScheme scheme, int level)
+    : s_(std::make_unique<State>(mesh, scheme, level)) {}
+
+OsdLimitCase::~OsdLimitCase() = default;
+
+void OsdLimitCase::prepare() {
+    State& st = *s_;
+    std::vector<Far::LimitStencilTableFactory::LocationArray> where;
+    st.locations(where);
+    {
+        std::unique_ptr<Far::TopologyRefiner> r = st.refiner();
+        r->RefineAdaptive(Far::TopologyRefiner::AdaptiveOptions(2));
+        LimitFactory::Options o;
+        o.generate1stDerivatives = true;
+        st.table.reset(LimitFactory::Create(*r, where, nullptr, nullptr, o));
+    }
+    const std::size_t n = std::size_t(st.table->GetNumStencils());
+    st.position.assign(3 * n, 0.0f);
+    st.du = st.dv = st.normal = st.position;
+    st.eval<Osd::CpuEvaluator>();
+
+    // The reference: the exact limit of every vertex of the uniformly refined level.
+    std::unique_ptr<Far::TopologyRefiner> r = st.refiner();
+    Far::TopologyRefiner::UniformOptions uniform(st.level);
+    uniform.fullTopologyInLastLevel = true;  // Limit needs it
+    r->RefineUniform(uniform);
+    struct Xyz {
+        float p[3];
+        void Clear() { p[0] = p[1] = p[2] = 0.0f; }
+        void AddWithWeight(const Xyz& o, float w) {
+            for (int c = 0; c < 3; ++c) p[c] += w * o.p[c];
+        }
+    };
+    std::vector<Xyz> levels(std::size_t(r->GetNumVerticesTotal()));
+    for (int v = 0; v < st.mesh.numVertices; ++v)
+        for (int c = 0; c < 3; ++c) levels[std::size_t(v)].p[c] = st.mesh.positions[3 * std::size_t(v) + c];
+    Far::PrimvarRefinerReal<float> primvar(*r);
+    Xyz* at = levels.data();
+    for (int L = 1; L <= st.level; ++L) {
+        Xyz* next = at + r->GetLevel(L - 1).GetNumVertices();
+        primvar.Interpolate(L, at, next);
+        at = next;
+    }
+    const int last = r->GetLevel(st.level).GetNumVertices();
+    std::vector<Xyz> limit(static_cast<std::size_t>(last));
+    primvar.Limit(at, limit);
+    std::vector<float> reference;
+    for (const Xyz& x : limit) reference.insert(reference.end(), x.p, x.p + 3);
+    const MatchResult m = matchPositions(st.position, reference, 1e-5 * st.mesh.boundingBoxDiagonal());
+    if (!m.ok)
+        throw std::runtime_error(st.mesh.name + " level " + std::to_string(st.level) +
+                                 ": OpenSubdiv's limit stencils miss the level's limit points (" + m.describe() + ")");
+}
+
+const std::vector<float>& OsdLimitCase::positions() const { return s_->position; }
+const std::vector<float>& OsdLimitCase::normals() const { return s_->normal; }
+int OsdLimitCase::numPoints() const { return s_->table->GetNumStencils(); }
+
+OsdLimitFigures OsdLimitCase::measure(int reps) {
+    State& st = *s_;
+    OsdLimitFigures f;
+    f.evalCpuMs = medianMs(reps, [&st] { st.eval<Osd::CpuEvaluator>(); });
+    f.evalOmpMs = medianMs(reps, [&st] { st.eval<Osd::OmpEvaluator>(); });
+    const LimitTable& t = *st.table;
+    f.tableBytes = t.GetSizes().size() * sizeof(int) + t.GetOffsets().size() * sizeof(int) +
+                   t.GetControlIndices().size() * sizeof(int) +
+                   (t.GetWeights().size() + t.GetDuWeights().size() + t.GetDvWeights().size()) * sizeof(float);
+    return f;
+}
+
+}  // namespace quadtri::bench

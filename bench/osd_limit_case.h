@@ -1,0 +1,39 @@
+// OpenSubdiv's way to get the limit points and normals of a refined level every frame: a
+// Far::LimitStencilTable with first derivatives at the level's vertices (their ptex locations on
+// the control faces), evaluated by Osd::CpuEvaluator (and Osd::OmpEvaluator) with du and dv, the
+// normals normalize(du x dv) computed in a loop over the results.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "bench/figures.h"
+#include "bench/osd_case.h"
+#include "bench/torus.h"
+
+namespace quadtri::bench {
+
+class OsdLimitCase {
+public:
+    // `mesh` a bench torus (quads under Catmark or triangles under Loop): each quad (i, j) gives the
+    // 4^level vertices of level `level` that it owns, at dyadic (s, t).
+    OsdLimitCase(const ControlMesh& mesh, OsdScheme scheme, int level);
+    ~OsdLimitCase();
+
+    // Builds the table (adaptive patches, isolation 2), evaluates once, and checks the limit
+    // points against Far::PrimvarRefiner::Limit of the uniformly refined level as a set
+    // (std::runtime_error if they differ): the locations are the level's vertices.
+    void prepare();
+
+    const std::vector<float>& positions() const;  // xyz per point, after prepare()
+    const std::vector<float>& normals() const;
+    int numPoints() const;
+
+    OsdLimitFigures measure(int reps);
+
+private:
+    struct State;
+    std::unique_ptr<State> s_;
+};
+
+}  // namespace quadtri::bench

@@ -1,0 +1,100 @@
+// GLSL mirror of kernels/limit_kernel.h: one invocation per limit stencil gathers its support
+// once, weighing each source with the entry's (position, dU, dV) triple
+// weights[weightOffsets[i] + 3k + 0, 1, 2], and writes the outputs OUTPUTS selects; the normal is
+// normalize(dU x dV), or where the tangents are parallel (sine below DEGENERATE_SINE) the
+// area-weighted face normal of the fallback table at vertex i (as shaders/mesh_normals.comp), or
+// (0, 0, 0) without one. Compiled to SPIR-V at build time and embedded in quadtri_vulkan.
+#version 450
+
+layout(local_size_x_id = 0) in;  // workgroup size, default 64
+layout(constant_id = 1) const int LENGTH = 3;  // floats per element of the source, position, dU, dV
+layout(constant_id = 2) const int SRC_STRIDE = 3;
+layout(constant_id = 3) const int POSITION_STRIDE = 3;
+layout(constant_id = 4) const int DU_STRIDE = 3;
+layout(constant_id = 5) const int DV_STRIDE = 3;
+layout(constant_id = 6) const int NORMAL_STRIDE = 3;
+layout(constant_id = 7) const int OUTPUTS = 15;     // bits: position, dU, dV, normal, fallback
+
+const float DEGENERATE_SINE = 1e-4;
+const bool WRITE_POSITION = (OUTPUTS & 1) != 0;
+const bool WRITE_DU = (OUTPUTS & 2) != 0;
+const bool WRITE_DV = (OUTPUTS & 4) != 0;
+const bool WRITE_NORMAL = (OUTPUTS & 8) != 0;
+const bool USE_FALLBACK = (OUTPUTS & 16) != 0;
+
+layout(std430, set = 0, binding = 0) readonly buffer Offsets { int offsets[]; };  // numStencils + 1
+layout(std430, set = 0, binding = 1) readonly buffer Indices { int indices[]; };
+layout(std430, set = 0, binding = 2) readonly buffer WeightOffsets { int weightOffsets[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Weights { float weights[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Src { float src[]; };
+layout(std430, set = 0, binding = 5) writeonly buffer Position { float position[]; };
+layout(std430, set = 0, binding = 6) writeonly buffer Du { float du[]; };
+layout(std430, set = 0, binding = 7) writeonly buffer Dv { float dv[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer Normal { float normal[]; };
+layout(std430, set = 0, binding = 9) readonly buffer FallbackOffsets { int fallbackOffsets[]; };
+layout(std430, set = 0, binding = 10) readonly buffer FallbackCorners { int fallbackCorners[]; };
+
+layout(push_constant) uniform Push {
+    uint srcOffset;  // floats before element 0 in each bound range
+    uint positionOffset;
+    uint duOffset;
+    uint dvOffset;
+    uint normalOffset;
+    uint start;  // first stencil of this dispatch
+    uint end;
+} pc;
+
+vec3 source(int v) {
+    const uint s = pc.srcOffset + uint(v) * uint(SRC_STRIDE);
+    return vec3(src[s], src[s + 1u], src[s + 2u]);
+}
+
+vec3 meshNormal(uint v) {
+    const vec3 p = source(int(v));
+    vec3 n = vec3(0.0);
+    for (int k = fallbackOffsets[v]; k < fallbackOffsets[v + 1u]; ++k)
+        n += cross(source(fallbackCorners[3 * k + 1]) - p,
+                   source(fallbackCorners[3 * k + 2]) - source(fallbackCorners[3 * k]));
+    const float len2 = dot(n, n);
+    return n * (len2 > 0.0 ? inversesqrt(len2) : 0.0);
+}
+
+void main() {
+    const uint i = pc.start + gl_GlobalInvocationID.x;
+    if (i >= pc.end) return;
+    float p[LENGTH], u[LENGTH], v[LENGTH];
+    for (int c = 0; c < LENGTH; ++c) p[c] = u[c] = v[c] = 0.0;
+    const int first = offsets[i];
+    const int n = offsets[i + 1u] - first;
+    int w = weightOffsets[i];
+    for (int k = 0; k < n; ++k, w += 3) {
+        const uint s = pc.srcOffset + uint(indices[first + k]) * uint(SRC_STRIDE);
+        const float wp = weights[w], wu = weights[w + 1], wv = weights[w + 2];
+        for (int c = 0; c < LENGTH; ++c) {
+            const float x = src[s + uint(c)];
+            p[c] += wp * x;
+            u[c] += wu * x;
+            v[c] += wv * x;
+        }
+    }
+    for (int c = 0; c < LENGTH; ++c) {
+        if (WRITE_POSITION) position[pc.positionOffset + i * uint(POSITION_STRIDE) + uint(c)] = p[c];
+        if (WRITE_DU) du[pc.duOffset + i * uint(DU_STRIDE) + uint(c)] = u[c];
+        if (WRITE_DV) dv[pc.dvOffset + i * uint(DV_STRIDE) + uint(c)] = v[c];
+    }
+    if (WRITE_NORMAL) {  // LENGTH is 3 here (the host checks it)
+        const int y = min(1, LENGTH - 1), z = min(2, LENGTH - 1);
+        const vec3 tu = vec3(u[0], u[y], u[z]), tv = vec3(v[0], v[y], v[z]);
+        const vec3 c = cross(tu, tv);
+        const float c2 = dot(c, c);
+        vec3 result = vec3(0.0);
+        if (c2 > DEGENERATE_SINE * DEGENERATE_SINE * dot(tu, tu) * dot(tv, tv))
+            result = c * inversesqrt(c2);
+        else if (USE_FALLBACK)
+            result = meshNormal(i);
+        const uint d = pc.normalOffset + i * uint(NORMAL_STRIDE);
+        normal[d] = result.x;
+        normal[d + 1u] = result.y;
+        normal[d + 2u] = result.z;
+    }
+}

@@ -1,0 +1,96 @@
+#include "tests/limit_test_tables.h"
+
+#include <random>
+
+#include <quadtri/far/refiner.h>
+#include "bench/torus.h"
+#include "tests/test_support.h"
+
+namespace quadtri::test {
+
+LimitStencilTable randomLimitTable(int numStencils, int numSources, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> weight(-1.0f, 1.0f);
+    LimitStencilTable t;
+    t.numSourceVertices = numSources;
+    std::vector<std::pair<int, int>> runs;  // (size, offset) of each run so far
+    for (int i = 0; i < numStencils; ++i) {
+        const int size = 1 + int(rng() % 24);
+        for (int k = 0; k < size; ++k) t.indices.push_back(int(rng() % unsigned(numSources)));
+        t.offsets.push_back(int(t.indices.size()));
+        int shared = -1;
+        if (rng() % 3 == 0)
+            for (const auto& [s, at] : runs)
+                if (s == size) shared = at;
+        if (shared >= 0) {
+            t.weightOffsets.push_back(shared);
+            continue;
+        }
+        t.weightOffsets.push_back(int(t.weights.size()));
+        runs.push_back({size, int(t.weights.size())});
+        float sums[3] = {0, 0, 0};
+        for (int k = 0; k < size; ++k)
+            for (int c = 0; c < 3; ++c) {
+                const float w = k + 1 < size ? weight(rng) : (c == 0 ? 1.0f : 0.0f) - sums[c];
+                t.weights.push_back(w);
+                sums[c] += w;
+            }
+    }
+    return t;
+}
+
+bool isDegenerateCorner(int v) { return v % 7 == 3 || v % 11 == 5; }
+
+CornerLevel cornerLevel(int level) {
+    const bench::ControlMesh m = bench::makeTorus(12, bench::TorusFaces::Mixed);
+    const TopologyDescriptor desc = descriptorOf(m.numVertices, m.faceSizes, m.faceVerts);
+    Refiner refiner(desc, Options());
+    refiner.refineUniform(level);
+    CornerLevel out;
+    out.positions = evaluateLevels(refiner, m.positions, 3)[level];
+    const LevelFaces faces = refiner.faces(level);
+    out.meshNormals = buildMeshNormalTable(faces);
+    const MeshNormalTable& mn = out.meshNormals;
+    LimitStencilTable& t = out.table;
+    t.numSourceVertices = mn.numVertices;
+    for (int v = 0; v < mn.numVertices; ++v) {
+        // The first triple: (next, opposite, previous) of a quad, (next, previous, previous) of a triangle.
+        const int* triple = &mn.corners[3 * std::size_t(mn.offsets[v])];
+        const int next = triple[0], prev = triple[2];
+        t.indices.insert(t.indices.end(), {v, next, prev});
+        t.offsets.push_back(int(t.indices.size()));
+        t.weightOffsets.push_back(int(t.weights.size()));
+        if (v % 11 == 5)
+            t.weights.insert(t.weights.end(), {1, 0, 0, 0, 0, 0, 0, 0, 0});
+        else if (v % 7 == 3)
+            t.weights.insert(t.weights.end(), {1, -1, -2, 0, 1, 2, 0, 0, 0});
+        else
+            t.weights.insert(t.weights.end(), {1, -1, -1, 0, 1, 0, 0, 0, 1});
+    }
+    return out;
+}
+
+template <class Real>
+void referenceLimit(const LimitStencilTable& t, const std::vector<float>& src, const BufferDescriptor& d,
+                    std::vector<Real>& position, std::vector<Real>& du, std::vector<Real>& dv) {
+    const int n = t.numStencils(), w = d.length;
+    position.assign(std::size_t(n) * w, Real(0));
+    du = dv = position;
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < t.size(i); ++k) {
+            const float* s = &src[d.offset + std::size_t(t.indices[t.offsets[i] + k]) * d.stride];
+            const float* wk = t.weightsOf(i) + 3 * k;
+            for (int c = 0; c < w; ++c) {
+                position[std::size_t(i) * w + c] += Real(wk[0]) * Real(s[c]);
+                du[std::size_t(i) * w + c] += Real(wk[1]) * Real(s[c]);
+                dv[std::size_t(i) * w + c] += Real(wk[2]) * Real(s[c]);
+            }
+        }
+}
+
+template void referenceLimit<float>(const LimitStencilTable&, const std::vector<float>&, const BufferDescriptor&,
+                                    std::vector<float>&, std::vector<float>&, std::vector<float>&);
+template void referenceLimit<double>(const LimitStencilTable&, const std::vector<float>&, const BufferDescriptor&,
+                                     std::vector<double>&, std::vector<double>&, std::vector<double>&);
+
+}  // namespace quadtri::test
