@@ -1,17 +1,138 @@
-// Placeholder for the generic limit masks (far/internal/limit_eigen.h): until the eigen-analysis
-// lands, a vertex without a closed form is refused with a clear error.
+// The generic limit masks (docs/limit_eigen.md): a vertex's configuration is analysed once (its
+// local subdivision matrix's eigen-structure, far/configuration_limit.cpp) and its masks laid over
+// the vertex's ring neighbourhood. Where that neighbourhood is not yet the configuration's own (another
+// irregularity within a ring or two, a semi-sharp crease still decaying, a face that is not a
+// triangle or quad), a patch around the vertex is refined locally until it is, and the
+// descendant's masks are brought back through the patch tables: the same limit, exactly.
 #include "far/internal/limit_eigen.h"
 
-#include <stdexcept>
-#include <string>
+#include <array>
+#include <map>
+
+#include "far/internal/configuration_limit.h"
+#include "far/internal/crease.h"
+#include "far/internal/limit_deeper.h"
 
 namespace quadtri {
 inline namespace v0 {
 
-void limitFromLocalMatrix(const SchemeRules&, const LimitVertex& vertex, LimitMaskCache&, LimitMask&) {
-    throw std::logic_error("limit masks: vertex " + std::to_string(vertex.ring.vertex) +
-                           " has no closed form under scheme " + toString(vertex.options.scheme) +
-                           " (generic limit masks not built yet)");
+namespace {
+
+// Levels refined locally at most: enough for a crease of sharpness up to this to decay and for
+// any irregularity near the vertex to fall behind its neighbourhood.
+constexpr int kMaxDeeperLevels = 10;
+
+// A mask as three weights per vertex of some level.
+using SparseMask = std::map<int, std::array<double, 3>>;  // ordered: the same table on every run
+
+// Where there is no limit to analyse (a non-manifold vertex, one without faces) or none needed (a
+// fixed corner): the vertex itself, and the two edges of `face` at it (-1: its first face in
+// Topology's order) as the tangent pair.
+void ownPositionAndFaceEdges(const Topology& t, int v, int face, SparseMask& m) {
+    m[v][0] += 1.0;
+    if (face < 0) {
+        if (t.vertexFaceCount(v) == 0) return;
+        face = t.facesOfVertex(v)[0];
+    }
+    const IndexSpan c = t.verticesOfFace(face);
+    const int i = t.cornerOfVertex(face, v), n = c.size();
+    m[c[(i + 1) % n]][1] += 1.0;
+    m[v][1] -= 1.0;
+    m[c[(i + n - 1) % n]][2] += 1.0;
+    m[v][2] -= 1.0;
+}
+
+// A corner whose sharpness never decays: every level keeps it in place, so it is its own limit
+// at any level, and its tangents are its first face's edges there.
+bool isFixedCorner(const Topology& t, int v, const Options& options) {
+    if (isInfinite(t.vertSharpness[v])) return true;
+    int sharp = 0;
+    for (int e : t.edgesOfVertex(v)) sharp += isInfinite(t.edgeSharpness[e]) || t.edgeFaceCount(e) == 1 ? 1 : 0;
+    const bool loneFace = (t.vertFlags[v] & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner;
+    return sharp > 2 || loneFace;
+}
+
+struct Found {
+    const LocalLimitMask* analysis = nullptr;
+    bool settled = false;
+};
+
+// The configuration's masks at v of level t if its neighbourhood there is the configuration's own
+// (or, with `acceptUnsettled`, at least as large).
+Found laidOver(const Topology& t, int v, const Options& options, LimitMaskCache& cache, bool acceptUnsettled,
+               SparseMask& m) {
+    Found found;
+    const std::optional<VertexFan> fan = fanOf(t, v, options);
+    if (!fan) return found;
+    const LocalLimitMask& limit = cachedLimit(fan->configuration, options, cache);
+    if (limit.rings == 0) return found;
+    const Neighbourhood ring = gatherNeighbourhood(t, v, fan->faces[0], limit.rings);
+    if (ring.vertices.size() != limit.position.size()) return found;
+    found.settled = gatherNeighbourhood(t, v, fan->faces[0], limit.rings + 1).signature == limit.signature;
+    if (!found.settled && !acceptUnsettled) return found;
+    found.analysis = &limit;
+    for (size_t k = 0; k < ring.vertices.size(); ++k) {
+        auto& w = m[ring.vertices[k]];
+        w[0] += limit.position[k];
+        w[1] += limit.du[k];
+        w[2] += limit.dv[k];
+    }
+    return found;
+}
+
+// `m` over a patch's child vertices brought back over the vertices the patch was cut from.
+SparseMask throughPatch(const PatchStep& step, const SparseMask& m) {
+    SparseMask out;
+    for (const auto& [child, w] : m) {
+        const StencilTableD& t = step.table;
+        for (int k = t.offsets[child]; k < t.offsets[child] + t.sizes[child]; ++k) {
+            auto& o = out[step.source[t.indices[k]]];
+            for (int c = 0; c < 3; ++c) o[c] += t.weights[k] * w[c];
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& options, int firstFace,
+                            LimitMaskCache& cache, LimitMask& out) {
+    EigenLimitReport report;
+    SparseMask m;
+    // Nothing to analyse at a non-manifold or isolated vertex; nothing needed at a fixed corner.
+    const bool ownLimit = (level.vertFlags[vertex] & kVertexNonManifold) || level.vertexFaceCount(vertex) == 0 ||
+                          isFixedCorner(level, vertex, options);
+    std::vector<PatchStep> steps;
+    if (!ownLimit) {
+        for (int depth = 0; depth <= kMaxDeeperLevels; ++depth) {
+            const Topology& t = steps.empty() ? level : steps.back().child;
+            const int v = steps.empty() ? vertex : steps.back().descendant;
+            const Found found = laidOver(t, v, options, cache, depth == kMaxDeeperLevels, m);
+            if (found.analysis) {
+                report.analysis = found.analysis;
+                report.settled = found.settled;
+                report.deeperLevels = depth;
+                break;
+            }
+            if (depth < kMaxDeeperLevels) steps.push_back(refinePatch(t, v, options));
+        }
+    }
+    if (!report.analysis) {
+        m.clear();
+        steps.clear();
+        ownPositionAndFaceEdges(level, vertex, firstFace, m);
+        report.settled = isFixedCorner(level, vertex, options);  // exact there
+    }
+    for (auto step = steps.rbegin(); step != steps.rend(); ++step) m = throughPatch(*step, m);
+    // Topology stores faces counter-clockwise seen from outside (left-handed input reversed), the
+    // way the fan is read: dU × dV points outside.
+    for (const auto& [u, w] : m) out.add(u, w[0], w[1], w[2]);
+    return report;
+}
+
+void limitFromLocalMatrix(const SchemeRules&, const LimitVertex& vertex, LimitMaskCache& cache, LimitMask& out) {
+    eigenLimit(vertex.level, vertex.ring.vertex, vertex.options, vertex.ring.faces.empty() ? -1 : vertex.ring.faces[0],
+               cache, out);
 }
 
 }  // namespace v0

@@ -8,16 +8,32 @@
 #include <vector>
 
 #include "far/internal/limit_mask.h"
+#include <quadtri/far/options.h>
+#include <quadtri/far/topology.h>
 
 namespace quadtri {
 inline namespace v0 {
 
 class SchemeRules;
 
+// How a configuration's tangents were found (docs/limit_eigen.md).
+enum class TangentSource {
+    Eigen,     // a clean subdominant pair: the exact tangent plane
+    Estimate,  // no clean pair: the layout's coordinate functions taken six levels down
+};
+
 // One configuration's masks, relative to the local neighbourhood in the order the generic path
-// lists it (its own convention), ready to be mapped onto a vertex's actual indices.
+// lists it (gatherNeighbourhood's labels, far/internal/local_matrix.h), ready to be mapped onto a
+// vertex's actual indices; with what the analysis found.
 struct LocalLimitMask {
     std::vector<double> position, du, dv;
+    int rings = 0;               // the neighbourhood is this many face rings; 0: none is closed
+    std::vector<int> signature;  // of the configuration's mesh, rings + 1 face rings deep
+    TangentSource tangents = TangentSource::Eigen;
+    bool exactPosition = true;   // false: eigenvalue 1 is not simple; the position is the vertex's own
+    double lambda1 = 0, lambda2 = 0, lambda3 = 0, imaginary = 0;  // moduli; |Im| of the pair
+    int iterations = 0;          // of the subspace iteration
+    double seconds = 0;          // time the analysis took
 };
 
 // Masks per configuration (the key encodes what decides the mask: the cyclic face sizes around
@@ -43,6 +59,16 @@ private:
 // SchemeRules::limitMask calls it wherever the scheme has no closed form.
 void limitFromLocalMatrix(const SchemeRules& rules, const LimitVertex& vertex, LimitMaskCache& cache,
                           LimitMask& out);
+
+// The same with what it found, for tests and diagnostics. `firstFace` is the face whose two edges
+// give a corner's tangents (-1: the first of the vertex's fan).
+struct EigenLimitReport {
+    const LocalLimitMask* analysis = nullptr;  // of the configuration the masks came from; null if none
+    int deeperLevels = 0;   // levels refined locally before the neighbourhood settled (0: it had)
+    bool settled = false;   // the masks are the scheme's exact limit (false: an estimate, docs/limit_eigen.md)
+};
+EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& options, int firstFace,
+                            LimitMaskCache& cache, LimitMask& out);
 
 }  // namespace v0
 }  // namespace quadtri
