@@ -142,9 +142,11 @@ int runRefine(const RefineArgs& args) {
     refiner.refineUniform(args.level);
     std::vector<float> positions =
         args.level > 0 ? evaluateLevels(args.evaluator, refiner, args.level, mesh.positions) : mesh.positions;
-    checkFinite(positions, mesh, args.level, options.scheme);
+    const NormalKind normals = args.normals.value_or(args.limit ? NormalKind::Limit : NormalKind::None);
+    const Surface surface = evaluateSurface(args.evaluator, refiner, args.level, std::move(positions), args.limit, normals);
+    checkFinite(surface.positions, mesh, args.level, options.scheme);
     const LevelFaces faces = refiner.faces(args.level);
-    io::writeObj(args.output, positions.data(), faces);
+    io::writeObj(args.output, surface.positions.data(), faces, surface.normals.empty() ? nullptr : surface.normals.data());
     std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,
                 faces.numVertices(), outputFaces(faces), args.output.c_str());
     return 0;

@@ -30,12 +30,29 @@ constexpr int kMaxLevel = 10;
 // Which evaluator applies the stencils (`refine --evaluator`).
 enum class EvaluatorKind { Cpu, Tbb, Vulkan };
 
+// Which normals `refine` writes (`--normals`): none, the refined mesh's area-weighted vertex
+// normals, or the limit surface's normals at the written vertices.
+enum class NormalKind { None, Mesh, Limit };
+
 struct RefineArgs {
     MeshArgs mesh;
     int level = 1;
     std::string output;
     EvaluatorKind evaluator = EvaluatorKind::Cpu;
+    bool limit = false;                     // --limit: the vertices moved onto the limit surface
+    std::optional<NormalKind> normals;      // default: limit normals with --limit, else none
 };
+
+// What `refine` writes: level `level`'s positions (moved onto the limit surface when `limit`)
+// and, unless `normals` is None, one unit normal per vertex (3 floats each).
+struct Surface {
+    std::vector<float> positions;
+    std::vector<float> normals;
+};
+// `refined` is level `level`'s positions (evaluateLevels). The limit table and mesh normals are
+// evaluated with `kind`; Vulkan without a usable device falls back to the CPU, saying so.
+Surface evaluateSurface(EvaluatorKind kind, const Refiner& refiner, int level, std::vector<float> refined, bool limit,
+                        NormalKind normals);
 
 // 3-float positions of level `level` (>= 1) of `refiner`, through its per-level tables one after
 // another with the chosen evaluator (linear in the tables; a factorized table can be far larger
@@ -48,6 +65,9 @@ std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, in
 // without one (saying why on stderr).
 std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner& refiner, int level,
                                                          const std::vector<float>& control);
+// The same as evaluateSurface on a headless Vulkan device, or nothing without one (saying why).
+std::optional<Surface> evaluateSurfaceOnVulkan(const Refiner& refiner, int level, const std::vector<float>& refined,
+                                               bool limit, NormalKind normals);
 // For the demo's Vulkan column: a headless device to time on, or null (saying why on stderr).
 struct VulkanTiming;
 struct VulkanTimingDeleter {

@@ -1,7 +1,9 @@
-// `quadtri refine --evaluator cpu|tbb|vulkan`: the per-level tables applied by the chosen evaluator.
+// `quadtri refine --evaluator cpu|tbb|vulkan`: the per-level tables, and the limit or mesh normals
+// of `--limit` / `--normals`, applied by the chosen evaluator.
 #include <optional>
 #include <utility>
 
+#include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/tbb_evaluator.h>
@@ -27,6 +29,44 @@ std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, in
         previous.swap(next);
     }
     return previous;
+}
+
+Surface evaluateSurface(EvaluatorKind kind, const Refiner& refiner, int level, std::vector<float> refined, bool limit,
+                        NormalKind normals) {
+    if (!limit && normals == NormalKind::None) return {std::move(refined), {}};
+    if (kind == EvaluatorKind::Vulkan) {
+        if (std::optional<Surface> surface = evaluateSurfaceOnVulkan(refiner, level, refined, limit, normals))
+            return std::move(*surface);
+        kind = EvaluatorKind::Cpu;
+    }
+    const bool tbb = kind == EvaluatorKind::Tbb;
+    const BufferDescriptor d(0, 3, 3);
+    const std::size_t n = refined.size() / 3;
+    // Where a limit normal is undefined (parallel tangents) the evaluators use the mesh normal.
+    const MeshNormalTable meshNormals = buildMeshNormalTable(refiner.faces(level));
+    Surface surface;
+    if (limit || normals == NormalKind::Limit) {
+        const LimitStencilTable table = refiner.limitStencils(level);
+        if (limit) surface.positions.assign(3 * n, 0.0f);
+        if (normals == NormalKind::Limit) surface.normals.assign(3 * n, 0.0f);
+        float* position = limit ? surface.positions.data() : nullptr;
+        float* normal = normals == NormalKind::Limit ? surface.normals.data() : nullptr;
+        if (tbb)
+            TbbEvaluator::EvalLimitStencils(refined.data(), d, position, d, nullptr, d, nullptr, d, normal, d, table,
+                                            &meshNormals);
+        else
+            CpuEvaluator::EvalLimitStencils(refined.data(), d, position, d, nullptr, d, nullptr, d, normal, d, table,
+                                            &meshNormals);
+    }
+    if (!limit) surface.positions = std::move(refined);
+    if (normals == NormalKind::Mesh) {  // of the positions written, limit or not
+        surface.normals.assign(3 * n, 0.0f);
+        if (tbb)
+            TbbEvaluator::EvalMeshNormals(surface.positions.data(), d, surface.normals.data(), d, meshNormals);
+        else
+            CpuEvaluator::EvalMeshNormals(surface.positions.data(), d, surface.normals.data(), d, meshNormals);
+    }
+    return surface;
 }
 
 }  // namespace quadtri::cli

@@ -97,6 +97,15 @@ int main(int argc, char** argv) {
             "--evaluator", [&refine](const std::string& s) { refine.evaluator = evaluators.at(s); },
             "Stencil evaluator: cpu, tbb (threads) or vulkan (falls back to cpu without a device; default cpu)")
         ->check(oneOf(evaluators, "evaluator"));
+    refineCmd->add_flag("--limit", refine.limit,
+                        "Move the vertices onto the limit surface and write its normals (vn) with them");
+    static const std::map<std::string, cli::NormalKind> normalKinds{
+        {"none", cli::NormalKind::None}, {"mesh", cli::NormalKind::Mesh}, {"limit", cli::NormalKind::Limit}};
+    refineCmd->add_option_function<std::string>(
+            "--normals", [&refine](const std::string& s) { refine.normals = normalKinds.at(s); },
+            "Normals written as vn: none, mesh (area-weighted face normals of the written mesh) or limit (the "
+            "limit surface's, at the written vertices); default limit with --limit, else none")
+        ->check(oneOf(normalKinds, "normal kind"));
 
     cli::InfoArgs info;
     CLI::App* infoCmd = app.add_subcommand("info", "Print topology statistics and table sizes per level");

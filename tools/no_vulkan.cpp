@@ -15,6 +15,11 @@ std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner&, int, co
     return std::nullopt;
 }
 
+std::optional<Surface> evaluateSurfaceOnVulkan(const Refiner&, int, const std::vector<float>&, bool, NormalKind) {
+    std::fprintf(stderr, "quadtri: built without Vulkan (QUADTRI_WITH_VULKAN=OFF); using the CPU evaluator\n");
+    return std::nullopt;
+}
+
 VulkanTimingPtr openVulkanTiming() {
     std::fprintf(stderr, "quadtri: built without Vulkan (QUADTRI_WITH_VULKAN=OFF); no Vulkan timings\n");
     return nullptr;

@@ -374,17 +374,24 @@ ObjMesh readObj(const std::string& path) {
     return parseObj(in, path);
 }
 
-void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces) {
+void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces, const float* normals) {
     char buf[128];
-    for (int v = 0; v < faces.numVertices(); ++v) {
-        const float* p = positions + 3 * size_t(v);
-        std::snprintf(buf, sizeof buf, "v %.9g %.9g %.9g\n", double(p[0]), double(p[1]), double(p[2]));
-        out << buf;
-    }
+    auto writeTriples = [&](const char* tag, const float* data) {
+        for (int v = 0; v < faces.numVertices(); ++v) {
+            const float* p = data + 3 * size_t(v);
+            std::snprintf(buf, sizeof buf, "%s %.9g %.9g %.9g\n", tag, double(p[0]), double(p[1]), double(p[2]));
+            out << buf;
+        }
+    };
+    writeTriples("v", positions);
+    if (normals) writeTriples("vn", normals);
     for (int f = 0; f < faces.numFaces(); ++f) {
         if (faces.isHole(f)) continue;
         out << 'f';
-        for (int v : faces.verticesOfFace(f)) out << ' ' << v + 1;
+        for (int v : faces.verticesOfFace(f)) {
+            out << ' ' << v + 1;
+            if (normals) out << "//" << v + 1;
+        }
         out << '\n';
     }
 }
@@ -449,8 +456,8 @@ void writeReplacing(const std::string& path, const std::function<void(std::ostre
     }
 }
 
-void writeObj(const std::string& path, const float* positions, const LevelFaces& faces) {
-    writeReplacing(path, [&](std::ostream& out) { writeObj(out, positions, faces); });
+void writeObj(const std::string& path, const float* positions, const LevelFaces& faces, const float* normals) {
+    writeReplacing(path, [&](std::ostream& out) { writeObj(out, positions, faces, normals); });
 }
 
 }  // namespace quadtri::io

@@ -59,10 +59,12 @@ struct ObjMesh {
 ObjMesh parseObj(std::istream& in, const std::string& name);
 ObjMesh readObj(const std::string& path);  // ObjError if the file cannot be opened
 
-// Writes positions (3 floats each, %.9g) and the non-hole faces, 1-based.
-void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces);
+// Writes positions (3 floats each, %.9g) and the non-hole faces, 1-based. With `normals` (3
+// floats per vertex), also one `vn` per vertex and faces as `f v//v`.
+void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces, const float* normals = nullptr);
 // The same into the file `path`, through writeReplacing.
-void writeObj(const std::string& path, const float* positions, const LevelFaces& faces);
+void writeObj(const std::string& path, const float* positions, const LevelFaces& faces,
+              const float* normals = nullptr);
 
 // Writes `path` through `write` into a temporary file beside it and renames that over `path` once
 // every byte is written and the file is closed, so that a failure or a kill leaves any old

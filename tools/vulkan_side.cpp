@@ -1,11 +1,14 @@
 // The CLI's Vulkan side (built with QUADTRI_WITH_VULKAN; tools/no_vulkan.cpp stands in without
-// it): `refine --evaluator vulkan` and the demo's Vulkan column.
+// it): `refine --evaluator vulkan` (levels, limit, normals) and the demo's Vulkan column.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 
+#include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/osd/vulkan_evaluator.h>
+#include <quadtri/osd/vulkan_limit_evaluator.h>
+#include <quadtri/osd/vulkan_limit_tables.h>
 #include "tools/commands.h"
 
 namespace quadtri::cli {
@@ -36,6 +39,42 @@ std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner& refiner,
         all.readBack(everything.data());
         std::fprintf(stderr, "quadtri: evaluated on Vulkan device %s\n", ctx.deviceName().c_str());
         return std::vector<float>(everything.begin() + 3 * std::ptrdiff_t(first[std::size_t(level)]), everything.end());
+    } catch (const VulkanError& e) {
+        std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); using the CPU evaluator\n", e.what());
+        return std::nullopt;
+    }
+}
+
+// The limit table and, for mesh normals, the normal table of level `level`, each one dispatch.
+std::optional<Surface> evaluateSurfaceOnVulkan(const Refiner& refiner, int level, const std::vector<float>& refined,
+                                               bool limit, NormalKind normals) {
+    try {
+        const BufferDescriptor d(0, 3, 3);
+        const int n = int(refined.size() / 3);
+        VulkanContext ctx;
+        VulkanLimitEvaluator evaluator(ctx);
+        const VulkanMeshNormalTable meshNormals(ctx, buildMeshNormalTable(refiner.faces(level)));
+        VulkanVertexBuffer source = VulkanVertexBuffer::create(ctx, n, 3);
+        source.updateData(refined.data(), 0, n);
+        VulkanVertexBuffer position = VulkanVertexBuffer::create(ctx, n, 3);
+        VulkanVertexBuffer normal = VulkanVertexBuffer::create(ctx, n, 3);
+        if (limit || normals == NormalKind::Limit) {
+            const VulkanLimitStencilTable table(ctx, refiner.limitStencils(level));
+            evaluator.EvalLimitStencilsAndWait(source, d, limit ? &position : nullptr, d, nullptr, d, nullptr, d,
+                                               normals == NormalKind::Limit ? &normal : nullptr, d, table,
+                                               &meshNormals);
+        }
+        const VulkanVertexBuffer& written = limit ? position : source;
+        if (normals == NormalKind::Mesh) evaluator.EvalMeshNormalsAndWait(written, d, normal, d, meshNormals);
+        Surface surface;
+        surface.positions.resize(refined.size());
+        written.readBack(surface.positions.data());
+        if (normals != NormalKind::None) {
+            surface.normals.resize(refined.size());
+            normal.readBack(surface.normals.data());
+        }
+        std::fprintf(stderr, "quadtri: limit and normals evaluated on Vulkan device %s\n", ctx.deviceName().c_str());
+        return surface;
     } catch (const VulkanError& e) {
         std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); using the CPU evaluator\n", e.what());
         return std::nullopt;
