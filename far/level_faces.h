@@ -19,7 +19,8 @@ public:
     int numVertices() const { return t_->numVertices; }
     int numFaces() const { return t_->numFaces(); }
     int faceSize(int f) const { return t_->faceSize(f); }
-    // Face f's corners, in the mesh's winding order (counter-clockwise unless Options::leftHanded).
+    // Face f's corners, counter-clockwise seen from outside (the Refiner stores clockwise input,
+    // Options::leftHanded, reversed).
     IndexSpan verticesOfFace(int f) const {
         const int* all = t_->faceVerts.data();
         return {all + t_->faceOffsets[f], all + t_->faceOffsets[f + 1]};
