@@ -25,17 +25,6 @@ void uploadAll(VulkanContext& ctx, detail::DeviceBuffer (&to)[N], const void* co
 
 }  // namespace
 
-VulkanLimitStencilTable::VulkanLimitStencilTable(VulkanContext& ctx, const LimitStencilTable& t)
-    : device_(ctx.device()), numStencils_(t.numStencils()), numSourceVertices_(t.numSourceVertices) {
-    if (t.offsets.size() != t.weightOffsets.size() + 1 || std::size_t(t.offsets.back()) != t.indices.size())
-        throw std::invalid_argument("VulkanLimitStencilTable: inconsistent LimitStencilTable arrays");
-    detail::DeviceBuffer b[4];
-    uploadAll(ctx, b, {t.offsets.data(), t.indices.data(), t.weightOffsets.data(), t.weights.data()},
-              {t.offsets.size() * sizeof(int), t.indices.size() * sizeof(int), t.weightOffsets.size() * sizeof(int),
-               t.weights.size() * sizeof(float)});
-    offsets_ = std::move(b[0]), indices_ = std::move(b[1]), weightOffsets_ = std::move(b[2]), weights_ = std::move(b[3]);
-}
-
 VulkanMeshNormalTable::VulkanMeshNormalTable(VulkanContext& ctx, const MeshNormalTable& t)
     : device_(ctx.device()), numVertices_(t.numVertices) {
     if (t.offsets.size() != std::size_t(t.numVertices) + 1 || 3 * std::size_t(t.offsets.back()) != t.corners.size())

@@ -8,27 +8,18 @@
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/osd/vulkan_context.h>
 #include <quadtri/osd/vulkan_memory.h>
+#include <quadtri/osd/vulkan_stencil_table.h>
 
 namespace quadtri {
 inline namespace v0 {
 
-class VulkanLimitStencilTable {
+// A LimitStencilTable uploaded once to device-local storage buffers, for VulkanLimitEvaluator.
+class VulkanLimitStencilTable : public detail::PooledTableBuffers {
 public:
     // Copies the table's four arrays through one staging buffer (waits).
-    VulkanLimitStencilTable(VulkanContext& ctx, const LimitStencilTable& table);
-
-    int numStencils() const { return numStencils_; }
-    int numSourceVertices() const { return numSourceVertices_; }
-    VkBuffer offsets() const { return offsets_.buffer(); }
-    VkBuffer indices() const { return indices_.buffer(); }
-    VkBuffer weightOffsets() const { return weightOffsets_.buffer(); }
-    VkBuffer weights() const { return weights_.buffer(); }
-    VkDevice device() const { return device_; }
-
-private:
-    VkDevice device_;
-    int numStencils_ = 0, numSourceVertices_ = 0;
-    detail::DeviceBuffer offsets_, indices_, weightOffsets_, weights_;
+    VulkanLimitStencilTable(VulkanContext& ctx, const LimitStencilTable& table)
+        : PooledTableBuffers(ctx, table.numSourceVertices, table.offsets, table.indices, table.weightOffsets,
+                             table.weights, "LimitStencilTable") {}
 };
 
 class VulkanMeshNormalTable {
