@@ -2,27 +2,23 @@
 
 #include <opensubdiv/far/stencilTable.h>
 #include <opensubdiv/far/stencilTableFactory.h>
-#include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefiner.h>
-#include <opensubdiv/far/topologyRefinerFactory.h>
 #include <opensubdiv/osd/bufferDescriptor.h>
 #include <opensubdiv/osd/cpuEvaluator.h>
 #include <opensubdiv/osd/ompEvaluator.h>
-#include <opensubdiv/sdc/options.h>
-#include <opensubdiv/sdc/types.h>
 
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
 #include "bench/compare.h"
+#include "bench/osd_topology.h"
 #include "bench/timing.h"
 
 namespace quadtri::bench {
 
 namespace Far = OpenSubdiv::Far;
 namespace Osd = OpenSubdiv::Osd;
-namespace Sdc = OpenSubdiv::Sdc;
 
 // Far::StencilTableFactory::Create is a wrapper that static_casts the StencilTableReal<float> built by
 // StencilTableFactoryReal<float>::Create to its subclass StencilTable, a downcast UBSan rejects:
@@ -44,17 +40,7 @@ struct OsdCase::State {
     State(const ControlMesh& m, OsdScheme s, int l) : mesh(m), scheme(s), level(l) {}
 
     std::unique_ptr<Far::TopologyRefiner> refine() const {
-        Far::TopologyDescriptor desc;
-        desc.numVertices = mesh.numVertices;
-        desc.numFaces = mesh.numFaces();
-        desc.numVertsPerFace = mesh.faceSizes.data();
-        desc.vertIndicesPerFace = mesh.faceVerts.data();
-        Sdc::Options sdc;
-        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-        const Sdc::SchemeType type = scheme == OsdScheme::Catmark ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP;
-        std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(type, sdc)));
-        if (!refiner) throw std::runtime_error(mesh.name + ": OpenSubdiv refused the topology");
+        std::unique_ptr<Far::TopologyRefiner> refiner = osdTopologyRefiner(mesh, scheme);
         refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
         return refiner;
     }

@@ -4,26 +4,23 @@
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/stencilTable.h>
 #include <opensubdiv/far/stencilTableFactory.h>
-#include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefiner.h>
-#include <opensubdiv/far/topologyRefinerFactory.h>
 #include <opensubdiv/osd/bufferDescriptor.h>
 #include <opensubdiv/osd/cpuEvaluator.h>
 #include <opensubdiv/osd/ompEvaluator.h>
-#include <opensubdiv/sdc/options.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "bench/compare.h"
+#include "bench/osd_topology.h"
 #include "bench/timing.h"
 
 namespace quadtri::bench {
 
 namespace Far = OpenSubdiv::Far;
 namespace Osd = OpenSubdiv::Osd;
-namespace Sdc = OpenSubdiv::Sdc;
 
 // As in osd_case.cpp: the Real templates, not the float wrappers whose downcast UBSan rejects.
 using LimitTable = Far::LimitStencilTableReal<float>;
@@ -39,20 +36,7 @@ struct OsdLimitCase::State {
 
     State(const ControlMesh& m, OsdScheme sc, int l) : mesh(m), scheme(sc), level(l) {}
 
-    std::unique_ptr<Far::TopologyRefiner> refiner() const {
-        Far::TopologyDescriptor desc;
-        desc.numVertices = mesh.numVertices;
-        desc.numFaces = mesh.numFaces();
-        desc.numVertsPerFace = mesh.faceSizes.data();
-        desc.vertIndicesPerFace = mesh.faceVerts.data();
-        Sdc::Options sdc;
-        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-        const Sdc::SchemeType type = scheme == OsdScheme::Catmark ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP;
-        std::unique_ptr<Far::TopologyRefiner> r(Factory::Create(desc, Factory::Options(type, sdc)));
-        if (!r) throw std::runtime_error(mesh.name + ": OpenSubdiv refused the topology");
-        return r;
-    }
+    std::unique_ptr<Far::TopologyRefiner> refiner() const { return osdTopologyRefiner(mesh, scheme); }
 
     // Dyadic locations owning each level vertex once. A quad face (a, b, c, d) owns s, t in
     // [0, 1) (corner a at (0, 0), b at (1, 0)); the torus's triangles (a, b, c) and (a, c, d) of
