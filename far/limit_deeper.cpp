@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstring>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "far/internal/crease.h"
 #include "far/internal/refine_topology.h"
@@ -20,7 +21,7 @@ PatchCut cutPatch(const Topology& t, int vertex) {
     PatchCut cut;
     std::unordered_map<int, int> local;
     std::vector<int> faces;
-    std::vector<uint8_t> inPatch(size_t(t.numFaces()), 0);
+    std::unordered_set<int> inPatch;  // not a flag per face of the level: cut once per vertex
     auto addVertex = [&](int v) {
         if (local.emplace(v, int(cut.source.size())).second) cut.source.push_back(v);
     };
@@ -30,10 +31,7 @@ PatchCut cutPatch(const Topology& t, int vertex) {
         const size_t end = cut.source.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(cut.source[reached]))
-                if (!inPatch[f]) {
-                    inPatch[f] = 1;
-                    faces.push_back(f);
-                }
+                if (inPatch.insert(f).second) faces.push_back(f);
         for (size_t i = 0; i < faces.size(); ++i)
             for (int u : t.verticesOfFace(faces[i])) addVertex(u);
     }
