@@ -4,7 +4,9 @@
 #include "far/internal/limit_deeper.h"
 
 #include <algorithm>
+#include <cstring>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "far/internal/crease.h"
 #include "far/internal/refine_topology.h"
@@ -15,69 +17,99 @@
 namespace quadtri {
 inline namespace v0 {
 
-PatchStep refinePatch(const Topology& t, int vertex, const Options& options) {
-    PatchStep step;
+PatchCut cutPatch(const Topology& t, int vertex) {
+    PatchCut cut;
     std::unordered_map<int, int> local;
     std::vector<int> faces;
-    std::vector<uint8_t> inPatch(size_t(t.numFaces()), 0);
+    std::unordered_set<int> inPatch;  // not a flag per face of the level: cut once per vertex
     auto addVertex = [&](int v) {
-        if (local.emplace(v, int(step.source.size())).second) step.source.push_back(v);
+        if (local.emplace(v, int(cut.source.size())).second) cut.source.push_back(v);
     };
     addVertex(vertex);
     size_t reached = 0;
     for (int ring = 0; ring < kPatchRings; ++ring) {
-        const size_t end = step.source.size();
+        const size_t end = cut.source.size();
         for (; reached < end; ++reached)
-            for (int f : t.facesOfVertex(step.source[reached]))
-                if (!inPatch[f]) {
-                    inPatch[f] = 1;
-                    faces.push_back(f);
-                }
+            for (int f : t.facesOfVertex(cut.source[reached]))
+                if (inPatch.insert(f).second) faces.push_back(f);
         for (size_t i = 0; i < faces.size(); ++i)
             for (int u : t.verticesOfFace(faces[i])) addVertex(u);
     }
-    std::vector<int> sizes, corners, creasePairs, holes, cornerVerts;
-    std::vector<float> creaseWeights, cornerWeights;
     std::vector<int> sharpEdges;
     for (size_t i = 0; i < faces.size(); ++i) {
         const int f = faces[i];
-        sizes.push_back(t.faceSize(f));
-        for (int u : t.verticesOfFace(f)) corners.push_back(local.at(u));
-        if (t.faceHole[f]) holes.push_back(int(i));
+        cut.sizes.push_back(t.faceSize(f));
+        for (int u : t.verticesOfFace(f)) cut.corners.push_back(local.at(u));
+        if (t.faceHole[f]) cut.holes.push_back(int(i));
         for (int e : t.edgesOfFace(f))
             if (isSharp(t.edgeSharpness[e])) sharpEdges.push_back(e);
     }
     std::sort(sharpEdges.begin(), sharpEdges.end());
     sharpEdges.erase(std::unique(sharpEdges.begin(), sharpEdges.end()), sharpEdges.end());
     for (int e : sharpEdges) {
-        creasePairs.push_back(local.at(t.edgeVerts[2 * e]));
-        creasePairs.push_back(local.at(t.edgeVerts[2 * e + 1]));
-        creaseWeights.push_back(t.edgeSharpness[e]);
+        cut.creasePairs.push_back(local.at(t.edgeVerts[2 * e]));
+        cut.creasePairs.push_back(local.at(t.edgeVerts[2 * e + 1]));
+        cut.creaseWeights.push_back(t.edgeSharpness[e]);
     }
-    for (size_t i = 0; i < step.source.size(); ++i)
-        if (isSharp(t.vertSharpness[step.source[i]])) {
-            cornerVerts.push_back(int(i));
-            cornerWeights.push_back(t.vertSharpness[step.source[i]]);
+    for (size_t i = 0; i < cut.source.size(); ++i)
+        if (isSharp(t.vertSharpness[cut.source[i]])) {
+            cut.cornerVerts.push_back(int(i));
+            cut.cornerWeights.push_back(t.vertSharpness[cut.source[i]]);
         }
+    return cut;
+}
+
+std::vector<int> PatchCut::key(const Options& options) const {
+    std::vector<int> k{int(source.size()), int(options.scheme), int(options.boundary), int(options.creaseMethod),
+                       options.smoothTriangles ? 1 : 0, options.leftHanded ? 1 : 0};
+    auto ints = [&](const std::vector<int>& a) {
+        k.push_back(int(a.size()));
+        k.insert(k.end(), a.begin(), a.end());
+    };
+    auto floats = [&](const std::vector<float>& a) {
+        k.push_back(int(a.size()));
+        for (float x : a) {
+            int bits;
+            std::memcpy(&bits, &x, sizeof bits);
+            k.push_back(bits);
+        }
+    };
+    ints(sizes);
+    ints(corners);
+    ints(creasePairs);
+    ints(holes);
+    ints(cornerVerts);
+    floats(creaseWeights);
+    floats(cornerWeights);
+    return k;
+}
+
+PatchStep refineCut(const PatchCut& cut, const Options& options) {
+    PatchStep step;
+    step.source = cut.source;
     TopologyDescriptor d;
-    d.numVertices = int(step.source.size());
-    d.numFaces = int(sizes.size());
-    d.numVertsPerFace = sizes.data();
-    d.faceVertIndices = corners.data();
-    d.numCreases = int(creaseWeights.size());
-    d.creaseVertexPairs = creasePairs.empty() ? nullptr : creasePairs.data();
-    d.creaseWeights = creaseWeights.empty() ? nullptr : creaseWeights.data();
-    d.numCorners = int(cornerVerts.size());
-    d.cornerVertexIndices = cornerVerts.empty() ? nullptr : cornerVerts.data();
-    d.cornerWeights = cornerWeights.empty() ? nullptr : cornerWeights.data();
-    d.numHoles = int(holes.size());
-    d.holeIndices = holes.empty() ? nullptr : holes.data();
+    d.numVertices = int(cut.source.size());
+    d.numFaces = int(cut.sizes.size());
+    d.numVertsPerFace = cut.sizes.data();
+    d.faceVertIndices = cut.corners.data();
+    d.numCreases = int(cut.creaseWeights.size());
+    d.creaseVertexPairs = cut.creasePairs.empty() ? nullptr : cut.creasePairs.data();
+    d.creaseWeights = cut.creaseWeights.empty() ? nullptr : cut.creaseWeights.data();
+    d.numCorners = int(cut.cornerVerts.size());
+    d.cornerVertexIndices = cut.cornerVerts.empty() ? nullptr : cut.cornerVerts.data();
+    d.cornerWeights = cut.cornerWeights.empty() ? nullptr : cut.cornerWeights.data();
+    d.numHoles = int(cut.holes.size());
+    d.holeIndices = cut.holes.empty() ? nullptr : cut.holes.data();
     const Topology patch = buildBaseTopology(d, options);
     const ChildNumbering num = numberChildren(patch, rulesOf(options.scheme).triangleSplit());
     step.table = buildLevelStencils<StencilTableD>(patch, num, options);
     step.child = refineTopology(patch, num, options.creaseMethod, TopologyDetail::Full);
     step.descendant = num.vertexPoint(0);
     return step;
+}
+
+PatchStep refinePatch(const Topology& t, int vertex, const Options& options) {
+    return refineCut(cutPatch(t, vertex), options);
 }
 
 }  // namespace v0

@@ -86,17 +86,42 @@ Found laidOver(const Topology& t, int v, const Options& options, LimitMaskCache&
     return found;
 }
 
-// `m` over a patch's child vertices brought back over the vertices the patch was cut from.
-SparseMask throughPatch(const PatchStep& step, const SparseMask& m) {
+// `m` over a patch's child vertices brought back over the vertices the patch was cut from, or
+// (`ownNumbering`) over the patch's own vertices.
+SparseMask throughPatch(const PatchStep& step, const SparseMask& m, bool ownNumbering) {
     SparseMask out;
     for (const auto& [child, w] : m) {
         const StencilTableD& t = step.table;
         for (int k = t.offsets[child]; k < t.offsets[child] + t.sizes[child]; ++k) {
-            auto& o = out[step.source[t.indices[k]]];
+            auto& o = out[ownNumbering ? t.indices[k] : step.source[t.indices[k]]];
             for (int c = 0; c < 3; ++c) o[c] += t.weights[k] * w[c];
         }
     }
     return out;
+}
+
+// A vertex whose neighbourhood has not settled, followed down the patch `cut` until it does (or
+// kMaxDeeperLevels): its masks over the cut's vertices.
+FollowedDown followDown(const PatchCut& cut, const Options& options, LimitMaskCache& cache) {
+    FollowedDown result;
+    std::vector<PatchStep> steps;
+    steps.push_back(refineCut(cut, options));
+    SparseMask m;
+    for (int depth = 1; depth <= kMaxDeeperLevels; ++depth) {
+        const Found found = laidOver(steps.back().child, steps.back().descendant, options, cache,
+                                     depth == kMaxDeeperLevels, m);
+        if (found.analysis) {
+            result.analysis = found.analysis;
+            result.settled = found.settled;
+            result.deeperLevels = depth;
+            break;
+        }
+        if (depth < kMaxDeeperLevels) steps.push_back(refinePatch(steps.back().child, steps.back().descendant, options));
+    }
+    if (!result.analysis) return result;
+    for (auto step = steps.rbegin(); step != steps.rend(); ++step) m = throughPatch(*step, m, step + 1 == steps.rend());
+    result.mask.assign(m.begin(), m.end());
+    return result;
 }
 
 }  // namespace
@@ -109,28 +134,33 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
     // closes into a configuration); nothing needed at a fixed corner.
     const bool ownLimit = (level.vertFlags[vertex] & kVertexNonManifold) || level.vertexFaceCount(vertex) == 0 ||
                           touchesHole(level, vertex) || isFixedCorner(level, vertex, options);
-    std::vector<PatchStep> steps;
     if (!ownLimit) {
-        for (int depth = 0; depth <= kMaxDeeperLevels; ++depth) {
-            const Topology& t = steps.empty() ? level : steps.back().child;
-            const int v = steps.empty() ? vertex : steps.back().descendant;
-            const Found found = laidOver(t, v, options, cache, depth == kMaxDeeperLevels, m);
-            if (found.analysis) {
-                report.analysis = found.analysis;
-                report.settled = found.settled;
-                report.deeperLevels = depth;
-                break;
+        const Found found = laidOver(level, vertex, options, cache, false, m);
+        report.analysis = found.analysis;
+        report.settled = found.settled;
+        if (!found.analysis) {
+            // The patch decides everything below, so a vertex with the same patch as one seen
+            // before has that one's masks, to the bit.
+            const PatchCut cut = cutPatch(level, vertex);
+            std::vector<int> key = cut.key(options);
+            const FollowedDown* known = cache.findFollowed(key);
+            FollowedDown computed;
+            if (!known) {
+                computed = followDown(cut, options, cache);
+                known = &computed;
             }
-            if (depth < kMaxDeeperLevels) steps.push_back(refinePatch(t, v, options));
+            report.analysis = known->analysis;
+            report.settled = known->settled;
+            report.deeperLevels = known->deeperLevels;
+            for (const auto& [u, w] : known->mask) m[cut.source[u]] = w;
+            if (known == &computed) cache.insertFollowed(std::move(key), std::move(computed));
         }
     }
     if (!report.analysis) {
         m.clear();
-        steps.clear();
         ownPositionAndFaceEdges(level, vertex, firstFace, m);
         report.settled = isFixedCorner(level, vertex, options);  // exact there
     }
-    for (auto step = steps.rbegin(); step != steps.rend(); ++step) m = throughPatch(*step, m);
     // Topology stores faces counter-clockwise seen from outside (left-handed input reversed), the
     // way the fan is read: dU × dV points outside.
     for (const auto& [u, w] : m) out.add(u, w[0], w[1], w[2]);

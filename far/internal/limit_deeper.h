@@ -13,7 +13,18 @@
 namespace quadtri {
 inline namespace v0 {
 
-// The faces within kPatchRings face rings of `vertex`, refined one level.
+// The faces within kPatchRings face rings of `vertex`, in the patch's own vertex numbering: what
+// refining it depends on, all of it, so that two cuts with equal keys refine alike, bit for bit.
+struct PatchCut {
+    std::vector<int> source;  // per patch vertex: the vertex of the level it was cut from
+    std::vector<int> sizes, corners, creasePairs, holes, cornerVerts;
+    std::vector<float> creaseWeights, cornerWeights;
+
+    // Every array but `source`, with the options that change the refinement.
+    std::vector<int> key(const Options& options) const;
+};
+
+// A patch refined one level.
 struct PatchStep {
     std::vector<int> source;  // per patch vertex: the vertex of the level it was cut from
     StencilTableD table;      // child vertices over the patch vertices
@@ -25,6 +36,8 @@ struct PatchStep {
 // reach two rings of the parent at most (Schaefer-Warren's copies, Butterfly's wings).
 constexpr int kPatchRings = 6;
 
+PatchCut cutPatch(const Topology& level, int vertex);
+PatchStep refineCut(const PatchCut& cut, const Options& options);
 PatchStep refinePatch(const Topology& level, int vertex, const Options& options);
 
 }  // namespace v0

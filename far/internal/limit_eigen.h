@@ -4,7 +4,10 @@
 // triangles). Computed once per configuration and cached.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "far/internal/limit_mask.h"
@@ -36,6 +39,15 @@ struct LocalLimitMask {
     double seconds = 0;          // time the analysis took
 };
 
+// A vertex followed down a locally refined patch (docs/limit_eigen.md): its masks over the patch's
+// own vertex numbering (PatchCut), in that numbering's order, and what the analysis found.
+struct FollowedDown {
+    std::vector<std::pair<int, std::array<double, 3>>> mask;  // (patch vertex, position / dU / dV weights)
+    const LocalLimitMask* analysis = nullptr;                 // null: no configuration was reached
+    int deeperLevels = 0;
+    bool settled = false;
+};
+
 // Masks per configuration (the key encodes what decides the mask: the cyclic face sizes around
 // the vertex, its rule and sharp edges, the scheme's state near it; the generic path defines it).
 // Not shared between threads: each builder of a limit table holds its own.
@@ -49,8 +61,21 @@ public:
         return masks_.emplace(std::move(key), std::move(mask)).first->second;
     }
 
+    // Followed-down masks by the patch they were cut from (PatchCut::key): on a repetitive mesh
+    // most such vertices share their patch with another one. Kept up to a fixed count, so that
+    // a mesh of distinct patches does not hold every one.
+    const FollowedDown* findFollowed(const std::vector<int>& patchKey) const {
+        const auto it = followed_.find(patchKey);
+        return it == followed_.end() ? nullptr : &it->second;
+    }
+    void insertFollowed(std::vector<int> patchKey, FollowedDown f) {
+        if (followed_.size() < kMaxFollowed) followed_.emplace(std::move(patchKey), std::move(f));
+    }
+
 private:
+    static constexpr std::size_t kMaxFollowed = 4096;
     std::map<std::vector<int>, LocalLimitMask> masks_;
+    std::map<std::vector<int>, FollowedDown> followed_;
 };
 
 // Appends to `out` (cleared by the caller) the limit masks of `vertex` under `rules`, over the
