@@ -201,14 +201,19 @@ void recordWorst(int L, const Worst& worst, const std::string& suffix = "") {
 
 class LimitAgainstOsd : public testing::TestWithParam<LimitCase> {};
 
-// The masks, evaluated without rounding, against OpenSubdiv's in double.
-TEST_P(LimitAgainstOsd, MasksEqualOpenSubdiv) {
-    const LimitCase& c = GetParam();
+// The case's shape refined to kMaxLevel under its scheme and options.
+RefinedMesh refineCase(const LimitCase& c) {
     Options base;
     base.scheme = c.ours;
     base.leftHanded = c.leftHanded;
     base.smoothTriangles = c.smoothTriangles;
-    const RefinedMesh ours = refineMesh("osd/" + c.shape + ".obj", kMaxLevel, base);
+    return refineMesh("osd/" + c.shape + ".obj", kMaxLevel, base);
+}
+
+// The masks, evaluated without rounding, against OpenSubdiv's in double.
+TEST_P(LimitAgainstOsd, MasksEqualOpenSubdiv) {
+    const LimitCase& c = GetParam();
+    const RefinedMesh ours = refineCase(c);
     const double diagonal = boundingBoxDiagonal(ours.mesh.positions);
     for (int L = c.firstLevel; L <= kMaxLevel; ++L) {
         const OsdLimit osd = osdLimit(ours.mesh, c.reference, ours.options.boundary, ours.options.creaseMethod, L,
@@ -229,11 +234,7 @@ TEST_P(LimitAgainstOsd, MasksEqualOpenSubdiv) {
 // control positions, which are exact: normals within kNormalTolerance.
 TEST_P(LimitAgainstOsd, FloatTablesAgreeWithOpenSubdiv) {
     const LimitCase& c = GetParam();
-    Options base;
-    base.scheme = c.ours;
-    base.leftHanded = c.leftHanded;
-    base.smoothTriangles = c.smoothTriangles;
-    const RefinedMesh ours = refineMesh("osd/" + c.shape + ".obj", kMaxLevel, base);
+    const RefinedMesh ours = refineCase(c);
     const double diagonal = boundingBoxDiagonal(ours.mesh.positions);
     for (int L = c.firstLevel; L <= kMaxLevel; ++L) {
         const OsdLimit osd = osdLimit(ours.mesh, c.reference, ours.options.boundary, ours.options.creaseMethod, L,
