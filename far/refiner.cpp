@@ -1,5 +1,6 @@
 #include <quadtri/far/refiner.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -97,7 +98,7 @@ public:
             throw refuse(held_ + used_ + more);
         used_ += more;
     }
-    void release(std::size_t less) { used_ -= less; }
+    void release(std::size_t less) { used_ -= std::min(less, used_); }  // estimates and actual sizes may differ
     std::size_t left() const { return budget_ - held_ - used_; }
     std::size_t budget() const { return budget_; }
 
@@ -142,10 +143,12 @@ LimitStencilTableD limitStencilsOf(const Refiner& refiner, int L, CompositionBud
     const TriangleSplit split = rulesOf(refiner.options().scheme).triangleSplit();
     Topology completed;
     const Topology* topology = nullptr;
+    std::size_t completion = 0;  // bytes reserved for the completed level, freed on return
     if (refiner.detail(L) == TopologyDetail::Full) {
         topology = &refiner.level(L);
     } else {
-        budget.reserve(refiner.estimateLevelBytes(L));
+        completion = refiner.estimateLevelBytes(L);
+        budget.reserve(completion);
         const Topology& parent = refiner.level(L - 1);
         completed = refineTopology(parent, numberChildren(parent, split), refiner.options().creaseMethod,
                                    TopologyDetail::Full);
@@ -156,9 +159,15 @@ LimitStencilTableD limitStencilsOf(const Refiner& refiner, int L, CompositionBud
         const Topology& parent = refiner.level(l - 1);
         starts.descend(parent, numberChildren(parent, split), l == L ? topology->numVertices : refiner.level(l).numVertices);
     }
-    budget.reserve(limitEntryBound(*topology) * (sizeof(int) + 3 * sizeof(double)) +
-                   std::size_t(topology->numVertices) * 2 * sizeof(int));
-    return buildLimitStencils(*topology, refiner.options(), &starts);
+    const std::size_t bound = limitEntryBound(*topology) * (sizeof(int) + 3 * sizeof(double)) +
+                              std::size_t(topology->numVertices) * 2 * sizeof(int);
+    budget.reserve(bound);
+    LimitStencilTableD table = buildLimitStencils(*topology, refiner.options(), &starts);
+    // What stays alive is the table itself: the completed level goes, and the bound was an upper
+    // one (the composition that follows gets what it leaves).
+    budget.release(completion + bound);
+    budget.reserve(bytesOf(table));
+    return table;
 }
 
 }  // namespace
@@ -196,13 +205,16 @@ LimitStencilTable Refiner::factorizedLimitStencils(int L) const {
     if (L == 0) return limitStencils(0);
     CompositionBudget budget("the factorized limit stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
-    const LimitStencilTableD limit = limitStencilsOf(*this, L, budget);
-    const StencilTableD levels = composeLevels(*this, L, budget);
     LimitStencilTableD composed;
-    try {
-        composed = composeLimitStencils(limit, levels, budget.left());
-    } catch (const std::length_error&) {
-        throw budget.refuse(budget.budget() + 1);
+    {
+        const LimitStencilTableD limit = limitStencilsOf(*this, L, budget);
+        const StencilTableD levels = composeLevels(*this, L, budget);
+        try {
+            composed = composeLimitStencils(limit, levels, budget.left());
+        } catch (const std::length_error&) {
+            throw budget.refuse(budget.budget() + 1);
+        }
+        budget.release(bytesOf(limit) + bytesOf(levels));  // both freed at the end of this block
     }
     budget.reserve(bytesOf(composed) + floatLimitBytes(composed.sizes.size(), composed.indices.size()));
     return toFloatTable(composed);
