@@ -166,9 +166,9 @@ inline void evalLimitFixed<3>(const float* src, int srcStride, const LimitStenci
 
 inline LimitOutput shifted(const LimitOutput& out, int by) { return {out.data ? out.data + by : nullptr, out.stride}; }
 
-// Any width: widths 1-4 in one pass; wider data in passes of 4 components (each component is
-// independent, so the result is the same as one pass). Normals need width 3.
-inline void evalLimitStencils(const float* src, int srcStride, int width, const LimitStencilArrays& t,
+// The portable loops for any width: widths 1-4 in one pass; wider data in passes of 4 components
+// (each component is independent, so the result is the same as one pass). Normals need width 3.
+inline void evalLimitPortable(const float* src, int srcStride, int width, const LimitStencilArrays& t,
                               const LimitOutputs& o, int start, int end) {
     switch (width) {
     case 1: evalLimitFixed<1>(src, srcStride, t, o, start, end); return;
@@ -179,8 +179,25 @@ inline void evalLimitStencils(const float* src, int srcStride, int width, const 
     }
     const LimitOutputs rest{shifted(o.position, 4), shifted(o.du, 4), shifted(o.dv, 4), {nullptr, 0}, nullptr};
     evalLimitFixed<4>(src, srcStride, t, o, start, end);
-    evalLimitStencils(src + 4, srcStride, width - 4, t, rest, start, end);
+    evalLimitPortable(src + 4, srcStride, width - 4, t, rest, start, end);
 }
+
+// Stencils [start, end) of any width (kernels/limit_kernel.cpp). Width 3, the positions every
+// engine evaluates, takes the AVX2 + FMA loop (kernels/limit_kernel_avx2.cpp) where the CPU has
+// it, decided once per process: fused multiply-adds and two partial sums per output, so its bits
+// differ from the portable loop's by float rounding; the serial and threaded evaluators call this
+// same function, so they stay bitwise equal to each other on any one machine.
+void evalLimitStencils(const float* src, int srcStride, int width, const LimitStencilArrays& t, const LimitOutputs& o,
+                       int start, int end);
+
+// Whether evalLimitStencils takes the AVX2 + FMA loop for width 3 on this CPU.
+bool limitKernelUsesAvx2();
+
+// The width-3 AVX2 + FMA loop, and the degenerate-normal case it hands back out of line (so that
+// file instantiates none of the inline code above with AVX2 code generation).
+void evalLimit3Avx2(const float* src, int srcStride, const LimitStencilArrays& t, const LimitOutputs& o, int start,
+                    int end);
+void degenerateNormalOutOfLine(const float* src, int srcStride, const LimitOutputs& o, int i, float* d);
 
 }  // namespace kernels
 }  // namespace v0

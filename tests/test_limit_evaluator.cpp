@@ -1,5 +1,6 @@
 // EvalLimitStencils on CpuEvaluator and TbbEvaluator: against the plain reference loop over the
-// table (bitwise in float, and within float rounding of the double loop), any subset of outputs
+// table (the portable kernel bitwise in float; every path within float rounding of the double
+// loop; the 3-float AVX2 + FMA loop, where the CPU runs it, rounds differently), any subset of outputs
 // with padded layouts and widths 1-7, unit normals equal to normalize(dU x dV), the degenerate
 // fallback (the level's area-weighted face normal, or (0, 0, 0) without a MeshNormalTable), TBB
 // bitwise equal to CPU in arenas of 1 and 2 threads, and the same argument checks on both.
@@ -18,6 +19,8 @@
 #include <quadtri/osd/tbb_evaluator.h>
 #include <quadtri/far/refiner.h>
 #include "bench/torus.h"
+#include "kernels/limit_kernel.h"
+#include "osd/internal/eval_arguments.h"
 #include "tests/limit_test_tables.h"
 #include "tests/test_support.h"
 
@@ -62,6 +65,21 @@ void evalOn(Host host, const std::vector<float>& src, const BufferDescriptor& sr
          o.ptr(3, want[3]), o.desc[3], t, fallback, start, end);
 }
 
+// The call through kernels::evalLimitPortable, the loop every width but 3 takes (and 3 where the
+// CPU has no AVX2 + FMA), with the evaluators' own argument handling.
+void evalPortable(const std::vector<float>& src, const BufferDescriptor& srcDesc, Outputs& o, const bool want[4],
+                  const LimitStencilTable& t) {
+    detail::HostLimitCall c;
+    int end = -1;
+    if (!detail::hostLimitCall(c, src.data(), srcDesc, o.ptr(0, want[0]), o.desc[0], o.ptr(1, want[1]), o.desc[1],
+                               o.ptr(2, want[2]), o.desc[2], o.ptr(3, want[3]), o.desc[3], t, nullptr, 0, end))
+        return;
+    kernels::evalLimitPortable(c.src, srcDesc.stride, srcDesc.length, c.arrays, c.outputs, 0, end);
+}
+
+// Whether the evaluators' width-`width` results are the portable loop's bits.
+bool portableBits(int width) { return width != 3 || !kernels::limitKernelUsesAvx2(); }
+
 const float* element(const Outputs& o, int k, int i) { return &o.data[k][o.desc[k].offset + std::size_t(i) * o.desc[k].stride]; }
 
 TEST(LimitEvaluator, MatchesTheReferenceLoopForEveryWidthAndOutputSubset) {
@@ -78,30 +96,39 @@ TEST(LimitEvaluator, MatchesTheReferenceLoopForEveryWidthAndOutputSubset) {
         const std::vector<double>* exact[3] = {&pd, &ud, &vd};
         for (int subset = 1; subset < 8; ++subset) {
             const bool want[4] = {(subset & 1) != 0, (subset & 2) != 0, (subset & 4) != 0, false};
-            Outputs o = makeOutputs(width, numStencils);
-            evalOn(Host::Cpu, src, srcDesc, o, want, t, nullptr);
-            for (int k = 0; k < 3; ++k) {
-                for (std::size_t f = 0; f < o.data[k].size(); ++f) {
-                    const BufferDescriptor& d = o.desc[k];
-                    const bool inElement = f >= std::size_t(d.offset) && int((f - d.offset) % d.stride) < width;
-                    if (!want[k] || !inElement) {
-                        ASSERT_EQ(o.data[k][f], kUntouched) << "width " << width << " output " << k << " float " << f;
-                        continue;
+            for (bool portable : {false, true}) {
+                Outputs o = makeOutputs(width, numStencils);
+                if (portable)
+                    evalPortable(src, srcDesc, o, want, t);
+                else
+                    evalOn(Host::Cpu, src, srcDesc, o, want, t, nullptr);
+                for (int k = 0; k < 3; ++k) {
+                    for (std::size_t f = 0; f < o.data[k].size(); ++f) {
+                        const BufferDescriptor& d = o.desc[k];
+                        const bool inElement = f >= std::size_t(d.offset) && int((f - d.offset) % d.stride) < width;
+                        if (!want[k] || !inElement) {
+                            ASSERT_EQ(o.data[k][f], kUntouched)
+                                << "width " << width << " output " << k << " float " << f;
+                            continue;
+                        }
+                        const std::size_t i = (f - d.offset) / d.stride, c = (f - d.offset) % d.stride;
+                        const float expected = (*reference[k])[i * width + c];
+                        if (portable || portableBits(width)) {
+                            ASSERT_EQ(std::memcmp(&o.data[k][f], &expected, sizeof(float)), 0)
+                                << "width " << width << " output " << k << " stencil " << i;
+                        }
+                        // Float rounding only: sums of up to 24 terms of magnitude <= 3 * |w|.
+                        ASSERT_NEAR(o.data[k][f], (*exact[k])[i * width + c], 1e-4);
                     }
-                    const std::size_t i = (f - d.offset) / d.stride, c = (f - d.offset) % d.stride;
-                    const float expected = (*reference[k])[i * width + c];
-                    ASSERT_EQ(std::memcmp(&o.data[k][f], &expected, sizeof(float)), 0)
-                        << "width " << width << " output " << k << " stencil " << i;
-                    // Float rounding only: sums of up to 24 terms of magnitude <= 3 * |w|.
-                    ASSERT_NEAR(o.data[k][f], (*exact[k])[i * width + c], 1e-4);
                 }
             }
         }
     }
 }
 
-// normalize(dU x dV) in float, operation by operation as kernels/limit_kernel.h documents it (every
-// evaluator path must give these bits), and within float rounding of the double normal.
+// normalize(dU x dV) in float, operation by operation as kernels/limit_kernel.h documents it (the
+// portable loop gives these bits), and on every path within float rounding of the double normal,
+// (0, 0, 0) where the tangents are parallel.
 TEST(LimitEvaluator, NormalsAreTheUnitCrossProductOfTheTangents) {
     const LimitStencilTable t = randomLimitTable(2000, 300, 3);
     const std::vector<float> src = randomSource(kPacked, 300, 5);
@@ -109,35 +136,47 @@ TEST(LimitEvaluator, NormalsAreTheUnitCrossProductOfTheTangents) {
     std::vector<double> p, u, v;
     referenceLimit(t, src, kPacked, pf, uf, vf);
     referenceLimit(t, src, kPacked, p, u, v);
-    Outputs o = makeOutputs(3, t.numStencils());
-    const bool want[4] = {false, false, false, true};
-    evalOn(Host::Cpu, src, kPacked, o, want, t, nullptr);
-    int checked = 0;
-    for (int i = 0; i < t.numStencils(); ++i) {
-        const float* q = element(o, 3, i);
-        const float* x = &uf[3 * i];
-        const float* y = &vf[3 * i];
-        const float nf[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
-        const float n2 = nf[0] * nf[0] + nf[1] * nf[1] + nf[2] * nf[2];
-        const float x2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2], y2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
-        if (!(n2 > 1e-4f * 1e-4f * x2 * y2)) {
-            for (int c = 0; c < 3; ++c) ASSERT_EQ(q[c], 0.0f) << "degenerate stencil " << i;
-            continue;
+    for (bool portable : {false, true}) {
+        Outputs o = makeOutputs(3, t.numStencils());
+        const bool want[4] = {false, false, false, true};
+        if (portable)
+            evalPortable(src, kPacked, o, want, t);
+        else
+            evalOn(Host::Cpu, src, kPacked, o, want, t, nullptr);
+        const bool bitwise = portable || portableBits(3);
+        int checked = 0;
+        for (int i = 0; i < t.numStencils(); ++i) {
+            const float* q = element(o, 3, i);
+            const double* a = &u[3 * i];
+            const double* b = &v[3 * i];
+            const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+            const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            const double size =
+                std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+            if (bitwise) {
+                const float* x = &uf[3 * i];
+                const float* y = &vf[3 * i];
+                const float nf[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+                const float n2 = nf[0] * nf[0] + nf[1] * nf[1] + nf[2] * nf[2];
+                const float x2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2], y2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+                if (!(n2 > 1e-4f * 1e-4f * x2 * y2)) {
+                    for (int c = 0; c < 3; ++c) ASSERT_EQ(q[c], 0.0f) << "degenerate stencil " << i;
+                    continue;
+                }
+                const float scale = 1.0f / std::sqrt(n2);
+                for (int c = 0; c < 3; ++c) ASSERT_EQ(q[c], nf[c] * scale) << "stencil " << i << " component " << c;
+            } else if (len <= 0.5e-4 * size) {  // parallel beyond doubt: the degenerate case
+                for (int c = 0; c < 3; ++c) ASSERT_EQ(q[c], 0.0f) << "degenerate stencil " << i;
+                continue;
+            }
+            if (len <= 1e-3 * size) continue;  // nearly parallel: float rounding moves the direction
+            const double qlen = std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2]);
+            ASSERT_NEAR(qlen, 1.0, 1e-6) << i;
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(q[c], n[c] / len, 1e-4) << i;
+            ++checked;
         }
-        const float scale = 1.0f / std::sqrt(n2);
-        for (int c = 0; c < 3; ++c) ASSERT_EQ(q[c], nf[c] * scale) << "stencil " << i << " component " << c;
-        const double* a = &u[3 * i];
-        const double* b = &v[3 * i];
-        const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        const double size = std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
-        if (len <= 1e-3 * size) continue;  // nearly parallel: float rounding moves the direction
-        const double qlen = std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2]);
-        ASSERT_NEAR(qlen, 1.0, 1e-6) << i;
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(q[c], n[c] / len, 1e-4) << i;
-        ++checked;
+        EXPECT_GT(checked, 1800);  // all but the one-source stencils (no tangent) and near-parallel pairs
     }
-    EXPECT_GT(checked, 1800);  // all but the one-source stencils (no tangent) and near-parallel pairs
 }
 
 // Parallel or zero tangents: the level's mesh normal at that vertex with a fallback table,
