@@ -193,22 +193,24 @@ OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInter
 
 namespace {
 
-// Far::PrimvarRefinerReal<double>'s primvar: the limit reference is computed in double, so that
-// its own rounding stays well below what the limit tests compare.
-struct VertexD {
-    double p[3];
-    void Clear(void* = nullptr) { p[0] = p[1] = p[2] = 0.0; }
-    void AddWithWeight(const VertexD& src, double weight) {
+// A primvar of OpenSubdiv's PrimvarRefiner in Real: double for the limit reference (its own
+// rounding stays well below what the limit tests compare), float for what an engine running
+// OpenSubdiv in float gets.
+template <class Real>
+struct VertexOf {
+    Real p[3];
+    void Clear(void* = nullptr) { p[0] = p[1] = p[2] = Real(0); }
+    void AddWithWeight(const VertexOf& src, Real weight) {
         p[0] += weight * src.p[0];
         p[1] += weight * src.p[1];
         p[2] += weight * src.p[2];
     }
 };
 
-}  // namespace
-
-OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
-                  CreaseMethod creaseMethod, int level, bool smoothTriangles, bool leftHanded) {
+template <class Real>
+OsdLimit limitIn(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary, CreaseMethod creaseMethod,
+                 int level, bool smoothTriangles, bool leftHanded) {
+    using Vertex = VertexOf<Real>;
     if (level < 0) throw std::invalid_argument("osdLimit: negative level");
     std::unique_ptr<Far::TopologyRefiner> refiner =
         createRefiner(mesh, scheme, boundary, creaseMethod, smoothTriangles, leftHanded);
@@ -216,21 +218,21 @@ OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolati
     uniform.fullTopologyInLastLevel = true;  // Limit needs the last level's incidences
     refiner->RefineUniform(uniform);
 
-    std::vector<VertexD> current(mesh.numVertices());
+    std::vector<Vertex> current(mesh.numVertices());
     for (int v = 0; v < mesh.numVertices(); ++v)
-        for (int c = 0; c < 3; ++c) current[v].p[c] = mesh.positions[3 * size_t(v) + c];
-    Far::PrimvarRefinerReal<double> primvar(*refiner);
+        for (int c = 0; c < 3; ++c) current[v].p[c] = Real(mesh.positions[3 * size_t(v) + c]);
+    Far::PrimvarRefinerReal<Real> primvar(*refiner);
     for (int L = 1; L <= level; ++L) {
-        std::vector<VertexD> next(refiner->GetLevel(L).GetNumVertices());
-        const VertexD* src = current.data();
-        VertexD* dst = next.data();
+        std::vector<Vertex> next(refiner->GetLevel(L).GetNumVertices());
+        const Vertex* src = current.data();
+        Vertex* dst = next.data();
         primvar.Interpolate(L, src, dst);
         current = std::move(next);
     }
     const size_t n = current.size();
-    std::vector<VertexD> position(n), du(n), dv(n);
-    const VertexD* src = current.data();
-    VertexD *dstPosition = position.data(), *dstDu = du.data(), *dstDv = dv.data();
+    std::vector<Vertex> position(n), du(n), dv(n);
+    const Vertex* src = current.data();
+    Vertex *dstPosition = position.data(), *dstDu = du.data(), *dstDv = dv.data();
     primvar.Limit(src, dstPosition, dstDu, dstDv);
 
     OsdLimit out;
@@ -247,6 +249,18 @@ OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolati
         out.vertexNonManifold.push_back(last.IsVertexNonManifold(v) ? 1 : 0);
     }
     return out;
+}
+
+}  // namespace
+
+OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                  CreaseMethod creaseMethod, int level, bool smoothTriangles, bool leftHanded) {
+    return limitIn<double>(mesh, scheme, boundary, creaseMethod, level, smoothTriangles, leftHanded);
+}
+
+OsdLimit osdLimitInFloat(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                         CreaseMethod creaseMethod, int level, bool smoothTriangles, bool leftHanded) {
+    return limitIn<float>(mesh, scheme, boundary, creaseMethod, level, smoothTriangles, leftHanded);
 }
 
 namespace {

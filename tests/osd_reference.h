@@ -70,6 +70,10 @@ struct OsdLimit {
 // there.
 OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                   CreaseMethod creaseMethod, int level, bool smoothTriangles = false, bool leftHanded = false);
+// The same computed in float throughout (PrimvarRefinerReal<float>), as an engine running
+// OpenSubdiv in float gets it: how much float data alone moves its limit.
+OsdLimit osdLimitInFloat(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                         CreaseMethod creaseMethod, int level, bool smoothTriangles = false, bool leftHanded = false);
 
 // Result of matching each vertex of `ours` to a distinct vertex of `reference` by position.
 struct PositionMatch {

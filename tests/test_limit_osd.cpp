@@ -29,7 +29,9 @@ namespace {
 
 constexpr double kPositionTolerance = 1e-5;  // of the control mesh's bounding-box diagonal
 constexpr double kNormalTolerance = 1e-4;    // radians
-constexpr double kFloatNormalTolerance = 2e-3;  // radians, through float tables and data
+// Per-level float tables on float data: within kNormalTolerance, or where float data alone moves
+// the normals further, within this factor of what it moves OpenSubdiv's own (PrimvarRefiner in float).
+constexpr double kFloatDataFactor = 2.0;
 constexpr int kMaxLevel = 3;
 
 struct LimitCase {
@@ -190,6 +192,19 @@ ExactLevel exactLimit(const Refiner& refiner, const std::vector<float>& control,
     return out;
 }
 
+// The largest angle between OpenSubdiv's normals computed in float and in double, vertex by vertex
+// (both number the vertices alike), where the double ones are defined (as in compare).
+double osdFloatNormalError(const OsdLimit& exact, const OsdLimit& inFloat) {
+    double worst = 0;
+    for (std::size_t o = 0; o < exact.vertexNonManifold.size(); ++o) {
+        if (exact.vertexNonManifold[o]) continue;
+        const Vec3 du = vec3(&exact.du[3 * o]), dv = vec3(&exact.dv[3 * o]), reference = cross(du, dv);
+        if (norm(reference) == 0 || norm(reference) <= 1e-6 * norm(du) * norm(dv)) continue;
+        worst = std::max(worst, angleBetween(cross(vec3(&inFloat.du[3 * o]), vec3(&inFloat.dv[3 * o])), reference));
+    }
+    return worst;
+}
+
 // The worst errors of a level, in the test's XML report (--gtest_output=xml).
 void recordWorst(int L, const Worst& worst, const std::string& suffix = "") {
     char position[32], angle[32];
@@ -229,9 +244,11 @@ TEST_P(LimitAgainstOsd, MasksEqualOpenSubdiv) {
 
 // What an engine gets, through the float tables. Per level: limitStencils(L) on the float refined
 // positions of level L, whose own rounding (about 1e-7 of the coordinates) the tangents, differences
-// of neighbours a refined edge apart, turn into up to a few 1e-4 rad at level 3 of the larger
-// shapes: normals held to kFloatNormalTolerance. Factorized: factorizedLimitStencils(L) on the
-// control positions, which are exact: normals within kNormalTolerance.
+// of neighbours a refined edge apart, turn into up to 8e-4 rad at level 3 of the larger shapes
+// (catmark_rook): OpenSubdiv computed in float moves its normals as far (8.0e-4 there), so the
+// normals are held to kNormalTolerance or kFloatDataFactor times OpenSubdiv's own float error.
+// Factorized: factorizedLimitStencils(L) on the control positions, which are exact: normals within
+// kNormalTolerance.
 TEST_P(LimitAgainstOsd, FloatTablesAgreeWithOpenSubdiv) {
     const LimitCase& c = GetParam();
     const RefinedMesh ours = refineCase(c);
@@ -243,8 +260,12 @@ TEST_P(LimitAgainstOsd, FloatTablesAgreeWithOpenSubdiv) {
         ASSERT_EQ(table.numStencils(), int(ours.positions[L].size() / 3)) << "level " << L;
         const Worst perLevel = compare(ours.positions[L], applyLimit(table, ours.positions[L]), osd, diagonal);
         EXPECT_LE(perLevel.position, kPositionTolerance) << "level " << L << ": limit position of vertex " << perLevel.positionVertex;
-        EXPECT_LE(perLevel.angle, kFloatNormalTolerance)
-            << "level " << L << ": normal of vertex " << perLevel.angleVertex << ", " << perLevel.compared << " compared";
+        const double osdInFloat = osdFloatNormalError(
+            osd, osdLimitInFloat(ours.mesh, c.reference, ours.options.boundary, ours.options.creaseMethod, L,
+                                 ours.options.smoothTriangles, c.leftHanded));
+        EXPECT_LE(perLevel.angle, std::max(kNormalTolerance, kFloatDataFactor * osdInFloat))
+            << "level " << L << ": normal of vertex " << perLevel.angleVertex << ", " << perLevel.compared
+            << " compared; OpenSubdiv in float is off by " << osdInFloat;
         const LimitStencilTable factorized = ours.refiner->factorizedLimitStencils(L);
         const Worst fromControl = compare(ours.positions[L], applyLimit(factorized, ours.mesh.positions), osd, diagonal);
         EXPECT_LE(fromControl.position, kPositionTolerance)
