@@ -15,6 +15,7 @@
 #include "far/internal/scheme.h"
 #include "far/internal/stencil_table_double.h"
 #include "far/internal/topology_builder.h"
+#include "far/internal/varying_table.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -107,17 +108,18 @@ private:
     std::size_t held_, budget_, used_ = 0;  // used: bytes of the double tables alive at this point
 };
 
-// The per-level tables of levels 1..L composed in double, over the control vertices.
-StencilTableD composeLevels(const Refiner& refiner, int L, CompositionBudget& budget) {
-    budget.reserve(doubleBytes(refiner.levelStencils(1)));
-    StencilTableD composed = toDoubleTable(refiner.levelStencils(1));
+// Tables of levels 1..L composed in double, over the control vertices: table(l) makes level l's
+// over level l-1, bytes(l) is what it takes, reserved before it is made.
+template <class Table, class Bytes>
+StencilTableD composeLevelTables(int L, CompositionBudget& budget, Table table, Bytes bytes) {
+    budget.reserve(bytes(1));
+    StencilTableD composed = table(1);
     for (int l = 2; l <= L; ++l) {
-        const StencilTable& table = refiner.levelStencils(l);
-        budget.reserve(doubleBytes(table));
-        const StencilTableD outer = toDoubleTable(table);
+        budget.reserve(bytes(l));
+        const StencilTableD outer = table(l);
         try {
             StencilTableD next = composeStencils(outer, composed, budget.left());
-            budget.release(doubleBytes(table) + bytesOf(composed));
+            budget.release(bytes(l) + bytesOf(composed));
             budget.reserve(bytesOf(next));
             composed = std::move(next);
         } catch (const std::length_error&) {
@@ -125,6 +127,28 @@ StencilTableD composeLevels(const Refiner& refiner, int L, CompositionBudget& bu
         }
     }
     return composed;
+}
+
+// The per-level tables of levels 1..L composed in double, over the control vertices.
+StencilTableD composeLevels(const Refiner& refiner, int L, CompositionBudget& budget) {
+    return composeLevelTables(
+        L, budget, [&](int l) { return toDoubleTable(refiner.levelStencils(l)); },
+        [&](int l) { return doubleBytes(refiner.levelStencils(l)); });
+}
+
+// The float table of a composed one, its bytes (an index per entry, two ints per stencil, a
+// weight pool of at most one float per entry) and a 3-float output reserved while the double
+// table still lives.
+StencilTable toFloatWithin(const StencilTableD& composed, CompositionBudget& budget) {
+    const std::size_t n = composed.sizes.size(), entries = composed.indices.size();
+    budget.reserve(entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float)));
+    return toFloatTable(composed);
+}
+
+// Level L's varying table over level L-1 (a level below maxLevel() always has full topology).
+StencilTableD varyingLevel(const Refiner& refiner, int L) {
+    const Topology& parent = refiner.level(L - 1);
+    return buildVaryingStencils(parent, numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit()));
 }
 
 // Entries of the limit stencils of a level: at most the vertex, its edge neighbours and its
@@ -173,17 +197,34 @@ LimitStencilTableD limitStencilsOf(const Refiner& refiner, int L, CompositionBud
 }  // namespace
 
 StencilTable Refiner::factorizedStencils(int L) const {
-    if (L < 1 || L > maxLevel())
-        throw TopologyError("factorized stencils asked for level " + std::to_string(L) + "; refined levels are 1.." +
-                            std::to_string(maxLevel()));
+    checkRefinedLevel("factorized stencils", L);
     CompositionBudget budget("the factorized stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
-    const StencilTableD composed = composeLevels(*this, L, budget);
-    // The float table (an index per entry, two ints per stencil, a weight pool of at most one
-    // float per entry) and a 3-float output per stencil, while the double table still lives.
-    const std::size_t n = composed.sizes.size(), entries = composed.indices.size();
-    budget.reserve(entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float)));
-    return toFloatTable(composed);
+    return toFloatWithin(composeLevels(*this, L, budget), budget);
+}
+
+void Refiner::checkRefinedLevel(const char* what, int L) const {
+    if (L < 1 || L > maxLevel())
+        throw TopologyError(std::string(what) + " asked for level " + std::to_string(L) + "; refined levels are 1.." +
+                            std::to_string(maxLevel()));
+}
+
+StencilTable Refiner::varyingStencils(int L) const {
+    checkRefinedLevel("varying stencils", L);
+    return toFloatTable(varyingLevel(*this, L));
+}
+
+StencilTable Refiner::factorizedVaryingStencils(int L) const {
+    checkRefinedLevel("factorized varying stencils", L);
+    CompositionBudget budget("the factorized varying stencils of level " + std::to_string(L), bytes(),
+                             options_.memoryBudgetBytes);
+    const StencilTableD composed = composeLevelTables(
+        L, budget, [&](int l) { return varyingLevel(*this, l); },
+        [&](int l) {
+            const Topology& parent = level(l - 1);
+            return varyingStencilBytes(parent, numberChildren(parent, rulesOf(options_.scheme).triangleSplit()));
+        });
+    return toFloatWithin(composed, budget);
 }
 
 void Refiner::checkLimitLevel(int L) const {

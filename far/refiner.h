@@ -56,6 +56,17 @@ public:
     // being composed, the float table and a 3-float output for it), before that allocation.
     StencilTable factorizedStencils(int L) const;
 
+    // Varying stencils of level L >= 1 over the vertices of level L-1: the same children, in the
+    // same order, as levelStencils(L), each a linear interpolation of its parents (a face point is
+    // its face's centroid, an edge point its edge's midpoint, a vertex point its vertex), for
+    // per-vertex data that should follow the refined mesh without being smoothed (colours,
+    // weights; OpenSubdiv's PrimvarRefiner::InterpolateVarying). Built on each call, in linear
+    // time; docs/varying.md. Throws TopologyError for a level out of range.
+    StencilTable varyingStencils(int L) const;
+    // The same over the control (level 0) vertices, composed in double; the budget is kept as in
+    // factorizedStencils.
+    StencilTable factorizedVaryingStencils(int L) const;
+
     // Limit stencils of level L's vertices (0 <= L <= maxLevel()) over level L's vertices: apply
     // them to what the per-level tables (or the control data, at L = 0) produced. One stencil per
     // vertex of level L, in its vertex order: the limit position and two tangents
@@ -78,6 +89,7 @@ public:
     std::size_t bytes() const;
 
 private:
+    void checkRefinedLevel(const char* what, int L) const;  // TopologyError unless 1 <= L <= maxLevel()
     void completeLevel(int L);  // rebuilds a faces-only level in full
     void checkLimitLevel(int L) const;
 

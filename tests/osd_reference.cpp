@@ -253,6 +253,37 @@ OsdLimit limitIn(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolatio
 
 }  // namespace
 
+OsdVarying osdVarying(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                      CreaseMethod creaseMethod, int level, bool smoothTriangles) {
+    using Vertex = VertexOf<double>;
+    std::unique_ptr<Far::TopologyRefiner> refiner = createRefiner(mesh, scheme, boundary, creaseMethod, smoothTriangles, false);
+    refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
+    std::vector<Vertex> vertex(mesh.numVertices());
+    for (int v = 0; v < mesh.numVertices(); ++v)
+        for (int c = 0; c < 3; ++c) vertex[v].p[c] = mesh.positions[3 * size_t(v) + c];
+    std::vector<Vertex> varying = vertex;
+    Far::PrimvarRefinerReal<double> primvar(*refiner);
+    for (int L = 1; L <= level; ++L) {
+        const int n = refiner->GetLevel(L).GetNumVertices();
+        std::vector<Vertex> nextVertex(n), nextVarying(n);
+        const Vertex* src = vertex.data();
+        Vertex* dst = nextVertex.data();
+        primvar.Interpolate(L, src, dst);
+        const Vertex* varyingSrc = varying.data();
+        Vertex* varyingDst = nextVarying.data();
+        primvar.InterpolateVarying(L, varyingSrc, varyingDst);
+        vertex = std::move(nextVertex);
+        varying = std::move(nextVarying);
+    }
+    OsdVarying out;
+    for (size_t v = 0; v < vertex.size(); ++v)
+        for (int c = 0; c < 3; ++c) {
+            out.refined.push_back(float(vertex[v].p[c]));
+            out.varying.push_back(varying[v].p[c]);
+        }
+    return out;
+}
+
 OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                   CreaseMethod creaseMethod, int level, bool smoothTriangles, bool leftHanded) {
     return limitIn<double>(mesh, scheme, boundary, creaseMethod, level, smoothTriangles, leftHanded);

@@ -75,6 +75,15 @@ OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolati
 OsdLimit osdLimitInFloat(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                          CreaseMethod creaseMethod, int level, bool smoothTriangles = false, bool leftHanded = false);
 
+// OpenSubdiv's refined positions of one level (PrimvarRefiner::Interpolate) and its varying
+// interpolation of the control positions there (InterpolateVarying), both in its vertex order.
+struct OsdVarying {
+    std::vector<float> refined;    // 3 floats per vertex
+    std::vector<double> varying;   // 3 per vertex
+};
+OsdVarying osdVarying(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                      CreaseMethod creaseMethod, int level, bool smoothTriangles = false);
+
 // Result of matching each vertex of `ours` to a distinct vertex of `reference` by position.
 struct PositionMatch {
     int numOurs = 0;
