@@ -233,9 +233,19 @@ file(WRITE "${WORK}/bigcount.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nt crease 
 run(2 info "${WORK}/bigcount.obj")
 expect_contains("${ERR}" "bigcount.obj:5: tag 'crease' announces 2147483648 arguments, has 3")
 
-# --- output: only OBJ, never half written, an old file kept on failure -------------------------
-run(2 refine "${CYLINDER}" --level 1 -o "${WORK}/out.gltf")
-expect_contains("${ERR}" "out.gltf: only OBJ output (.obj) is written")
+# --- output: OBJ or glTF, never half written, an old file kept on failure ----------------------
+run(2 refine "${CYLINDER}" --level 1 -o "${WORK}/out.ply")
+expect_contains("${ERR}" "out.ply: writes OBJ (.obj) or glTF (.gltf, .glb), not .ply")
+run(0 refine "${CYLINDER}" --level 1 -o "${WORK}/out.glb")
+file(READ "${WORK}/out.glb" magic LIMIT 4 HEX)
+expect_equal("refine -o out.glb: the binary container's magic (hex of 'glTF')" "${magic}" "676c5446")
+run(0 refine "${CYLINDER}" --level 1 --normals none -o "${WORK}/out.gltf")
+file(READ "${WORK}/out.gltf" gltfText)
+expect_contains("${gltfText}" "\"version\": \"2.0\"")
+expect_contains("${gltfText}" "\"POSITION\"")
+if(gltfText MATCHES "\"NORMAL\"")
+  message(FATAL_ERROR "refine --normals none -o out.gltf: the file has normals")
+endif()
 run(0 refine "${CYLINDER}" --level 1 -o "${WORK}/upper.OBJ")
 file(WRITE "${WORK}/keep.obj" "old\n")
 file(MAKE_DIRECTORY "${WORK}/folder.obj")

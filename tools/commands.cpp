@@ -10,8 +10,10 @@
 #include <map>
 #include <vector>
 
+#include <quadtri/far/draw_buffers.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/osd/cpu_evaluator.h>
+#include "tools/gltf_io.h"
 #include "tools/obj_io.h"
 
 namespace quadtri::cli {
@@ -130,23 +132,49 @@ void printBase(const Topology& t, const Options& options) {
 
 }  // namespace
 
+namespace {
+
+// What draws the level in a glTF file: its draw buffers' triangles, positions and normals
+// gathered into draw-vertex order.
+io::TriangleMesh triangleMeshOf(const LevelFaces& faces, const Surface& surface) {
+    const DrawBuffers b = buildDrawBuffers(faces);
+    io::TriangleMesh m;
+    m.triangles = b.triangles;
+    for (int v : b.vertexOf) {
+        const float* p = surface.positions.data() + 3 * std::size_t(v);
+        m.positions.insert(m.positions.end(), p, p + 3);
+        if (surface.normals.empty()) continue;
+        const float* n = surface.normals.data() + 3 * std::size_t(v);
+        m.normals.insert(m.normals.end(), n, n + 3);
+    }
+    return m;
+}
+
+}  // namespace
+
 int runRefine(const RefineArgs& args) {
     if (args.output.empty()) throw io::ObjError("-o: the output file name is empty");
     std::string extension = std::filesystem::path(args.output).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (!extension.empty() && extension != ".obj")
-        throw io::ObjError(args.output + ": only OBJ output (.obj) is written, not " + extension);
+    const bool gltf = extension == ".gltf" || extension == ".glb";
+    if (!extension.empty() && extension != ".obj" && !gltf)
+        throw io::ObjError(args.output + ": writes OBJ (.obj) or glTF (.gltf, .glb), not " + extension);
     io::ObjMesh mesh = loadMesh(args.mesh);
     const Options options = makeOptions(args.mesh, mesh);
     Refiner refiner = makeRefiner(mesh, options);
     refiner.refineUniform(args.level);
     std::vector<float> positions =
         args.level > 0 ? evaluateLevels(args.evaluator, refiner, args.level, mesh.positions) : mesh.positions;
-    const NormalKind normals = args.normals.value_or(args.limit ? NormalKind::Limit : NormalKind::None);
+    // glTF viewers shade with the file's normals: mesh normals unless asked otherwise.
+    const NormalKind fallback = gltf ? NormalKind::Mesh : NormalKind::None;
+    const NormalKind normals = args.normals.value_or(args.limit ? NormalKind::Limit : fallback);
     const Surface surface = evaluateSurface(args.evaluator, refiner, args.level, std::move(positions), args.limit, normals);
     checkFinite(surface.positions, mesh, args.level, options.scheme);
     const LevelFaces faces = refiner.faces(args.level);
-    io::writeObj(args.output, surface.positions.data(), faces, surface.normals.empty() ? nullptr : surface.normals.data());
+    if (gltf)
+        io::writeGltf(args.output, triangleMeshOf(faces, surface));
+    else
+        io::writeObj(args.output, surface.positions.data(), faces, surface.normals.empty() ? nullptr : surface.normals.data());
     std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,
                 faces.numVertices(), outputFaces(faces), args.output.c_str());
     return 0;

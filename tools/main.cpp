@@ -87,10 +87,12 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "quadtri " QUADTRI_VERSION_STRING);
 
     cli::RefineArgs refine;
-    CLI::App* refineCmd = app.add_subcommand("refine", "Refine a mesh uniformly and write the last level as OBJ");
+    CLI::App* refineCmd = app.add_subcommand("refine", "Refine a mesh uniformly and write the last level as OBJ or glTF");
     addMeshFlags(*refineCmd, refine.mesh);
     addLevel(*refineCmd, "--level,-l", refine.level, "Refinement level")->required();
-    refineCmd->add_option("-o,--output", refine.output, "Output OBJ file")->required();
+    refineCmd->add_option("-o,--output", refine.output,
+                          "Output file: OBJ (.obj), or glTF 2.0 triangles (.gltf, .glb: binary) with normals")
+        ->required();
     static const std::map<std::string, cli::EvaluatorKind> evaluators{
         {"cpu", cli::EvaluatorKind::Cpu}, {"tbb", cli::EvaluatorKind::Tbb}, {"vulkan", cli::EvaluatorKind::Vulkan}};
     refineCmd->add_option_function<std::string>(
@@ -103,8 +105,9 @@ int main(int argc, char** argv) {
         {"none", cli::NormalKind::None}, {"mesh", cli::NormalKind::Mesh}, {"limit", cli::NormalKind::Limit}};
     refineCmd->add_option_function<std::string>(
             "--normals", [&refine](const std::string& s) { refine.normals = normalKinds.at(s); },
-            "Normals written as vn: none, mesh (area-weighted face normals of the written mesh) or limit (the "
-            "limit surface's, at the written vertices); default limit with --limit, else none")
+            "Normals written (OBJ vn, glTF NORMAL): none, mesh (area-weighted face normals of the written mesh) or "
+            "limit (the limit surface's, at the written vertices); default limit with --limit, else none for OBJ "
+            "and mesh for glTF")
         ->check(oneOf(normalKinds, "normal kind"));
 
     cli::InfoArgs info;
