@@ -15,6 +15,7 @@
 #include <quadtri/osd/cpu_evaluator.h>
 #include "tools/gltf_io.h"
 #include "tools/obj_io.h"
+#include "tools/vertex_cache.h"
 
 namespace quadtri::cli {
 
@@ -134,10 +135,11 @@ void printBase(const Topology& t, const Options& options) {
 
 namespace {
 
-// What draws the level in a glTF file: its draw buffers' triangles, positions and normals
-// gathered into draw-vertex order.
+// What draws the level in a glTF file: its draw buffers in vertex-cache order, positions and
+// normals gathered into draw-vertex order.
 io::TriangleMesh triangleMeshOf(const LevelFaces& faces, const Surface& surface) {
-    const DrawBuffers b = buildDrawBuffers(faces);
+    DrawBuffers b = buildDrawBuffers(faces);
+    io::optimizeVertexCache(b);
     io::TriangleMesh m;
     m.triangles = b.triangles;
     for (int v : b.vertexOf) {
