@@ -43,7 +43,8 @@ public:
 
 protected:
     // Copies the arrays through one staging buffer (waits); std::invalid_argument naming `table`
-    // ("StencilTable") when they are inconsistent.
+    // ("StencilTable") when they are inconsistent: arrays of the wrong lengths, or a stencil whose
+    // entries or weights reach outside their arrays (the shader would read past them).
     PooledTableBuffers(VulkanContext& ctx, const HostArrays& arrays, const char* table);
 
     // The per-stencil sizes (VK_NULL_HANDLE for a CSR table).
