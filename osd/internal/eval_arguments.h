@@ -47,10 +47,10 @@ bool checkLimitArguments(bool srcPresent, const BufferDescriptor& srcDesc, const
                          const LimitOutputArgument& normal, int numStencils, int numSources, int fallbackVertices,
                          int start, int& end);
 
-// The host evaluators' EvalLimitStencils arguments checked (a table whose per-stencil arrays
-// differ in length, then checkLimitArguments) and turned into
-// what kernels::evalLimitStencils reads (outputs.fallback points into the struct itself, so it is
-// filled in place); returns false when the range is empty.
+// The host evaluators' EvalLimitStencils arguments checked (the table's per-stencil arrays of
+// one length, then checkLimitArguments) and turned into what kernels::evalLimitStencils reads
+// (outputs.fallback points into the struct itself, so it is filled in place); returns false when
+// the range is empty.
 struct HostLimitCall {
     const float* src;
     kernels::LimitStencilArrays arrays;
