@@ -1,11 +1,13 @@
 // Limit stencil tables (docs/limit.md): one mask per vertex from the scheme's hook, built in
 // parallel parts (one ring, mask and cache per part, joined in vertex order, so the table does
-// not depend on the thread count), composition over the control vertices, the pooled float table.
+// not depend on the thread count), composition over the control vertices, the float table with
+// its runs of sources and its weight triples pooled.
 #include "far/internal/limit_table.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <numeric>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
@@ -140,26 +142,55 @@ LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const S
     return out;
 }
 
+namespace {
+
+// Stencil i's entries in ascending source order: its sources into `run`, their weight triples
+// rounded to float into `triples`. The sort is by (source, position in the stencil), so ties
+// (a source listed twice) keep their order and become one entry, weights added in double.
+void sortedEntries(const LimitStencilTableD& table, int i, std::vector<int>& order, std::vector<int>& run,
+                   std::vector<float>& triples) {
+    const int size = table.sizes[i];
+    const int* sources = table.indices.data() + table.offsets[i];
+    const double* weights = table.weights.data() + 3 * std::size_t(table.offsets[i]);
+    order.resize(size);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return sources[a] < sources[b] || (sources[a] == sources[b] && a < b); });
+    run.clear();
+    triples.clear();
+    for (int k = 0; k < size;) {
+        const int source = sources[order[k]];
+        const double* w = weights + 3 * order[k];
+        double sum[3] = {w[0], w[1], w[2]};
+        for (++k; k < size && sources[order[k]] == source; ++k)
+            for (int c = 0; c < 3; ++c) sum[c] += weights[3 * order[k] + c];
+        run.push_back(source);
+        triples.insert(triples.end(), {float(sum[0]), float(sum[1]), float(sum[2])});
+    }
+}
+
+}  // namespace
+
 LimitStencilTable toFloatTable(const LimitStencilTableD& table) {
     LimitStencilTable out;
     out.numSourceVertices = table.numSourceVertices;
     const int n = table.numStencils();
-    out.offsets.assign(std::size_t(n) + 1, 0);
-    out.weightOffsets.assign(n, 0);
-    out.indices.resize(table.indices.size());
+    out.sizes.resize(n);
+    out.offsets.resize(n);
+    out.weightOffsets.resize(n);
+    IndexPool runs;
     WeightPool pool;
+    std::vector<int> order, run;
     std::vector<float> triples;
-    std::size_t entries = 0;
     for (int i = 0; i < n; ++i) {
-        const int size = table.sizes[i], first = table.offsets[i];
-        triples.resize(3 * std::size_t(size));
-        for (int k = 0; k < 3 * size; ++k) triples[k] = float(table.weights[3 * std::size_t(first) + k]);
-        std::copy(table.indices.begin() + first, table.indices.begin() + first + size, out.indices.begin() + entries);
-        entries += size;
+        sortedEntries(table, i, order, run, triples);
+        const int size = int(run.size());
+        out.sizes[i] = size;
+        out.offsets[i] = runs.intern(run.data(), size);
         out.weightOffsets[i] = pool.intern(triples.data(), 3 * size);
-        out.offsets[i + 1] = int(entries);
     }
-    out.weights = pool.takeWeights();
+    out.indices = runs.take();
+    out.weights = pool.take();
     return out;
 }
 

@@ -155,10 +155,11 @@ StencilTableD varyingLevel(const Refiner& refiner, int L) {
 // faces' opposite corners.
 std::size_t limitEntryBound(const Topology& t) { return t.numVertices + t.vertEdges.size() + t.vertFaces.size(); }
 
-// Bytes of a float limit table of n stencils and `entries` entries (a pool of at most three
-// floats per entry) and of a 3-float output per stencil.
+// Bytes of a float limit table of n stencils and `entries` entries (pools of at most an index
+// and three floats per entry, three ints per stencil), of the two pools' hash slots (about one
+// of three ints per stencil each) and of a 3-float output per stencil.
 std::size_t floatLimitBytes(std::size_t n, std::size_t entries) {
-    return entries * (sizeof(int) + 3 * sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float));
+    return entries * (sizeof(int) + 3 * sizeof(float)) + n * (3 * sizeof(int) + 2 * 3 * sizeof(int) + 3 * sizeof(float));
 }
 
 // Level L's limit stencils in double, what they allocate reserved in `budget`. A faces-only

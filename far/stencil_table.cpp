@@ -28,7 +28,7 @@ StencilTable toFloatTable(const StencilTableD& d) {
         rounded.assign(d.weights.begin() + first, d.weights.begin() + last);
         out.weightOffsets.push_back(pool.intern(rounded.data(), d.sizes[i]));
     }
-    out.weights = pool.takeWeights();
+    out.weights = pool.take();
     return out;
 }
 

@@ -23,10 +23,12 @@ namespace kernels {
 // of a tangent gathered from ~10-30 sources leaves errors of ~1e-6 of its length.
 constexpr float kDegenerateSine = 1e-4f;
 
-// LimitStencilTable's arrays: stencil i's support is indices[offsets[i] .. offsets[i+1]), entry
-// k's (position, dU, dV) weights are weights[weightOffsets[i] + 3k + 0, 1, 2].
+// LimitStencilTable's arrays: stencil i's support is indices[offsets[i] .. offsets[i] + sizes[i])
+// (runs may be shared between stencils, so offsets need not increase), entry k's (position, dU,
+// dV) weights are weights[weightOffsets[i] + 3k + 0, 1, 2].
 struct LimitStencilArrays {
-    const int* offsets;  // numStencils + 1
+    const int* sizes;    // numStencils
+    const int* offsets;  // numStencils
     const int* indices;
     const int* weightOffsets;
     const float* weights;
@@ -80,7 +82,7 @@ inline void evalLimitFixed(const float* src, int srcStride, const LimitStencilAr
                            int start, int end) {
     for (int i = start; i < end; ++i) {
         float p[Width] = {}, u[Width] = {}, v[Width] = {};
-        const int first = t.offsets[i], n = t.offsets[i + 1] - first;
+        const int first = t.offsets[i], n = t.sizes[i];
         const int* idx = t.indices + first;
         const float* w = t.weights + t.weightOffsets[i];
         const float* s0 = n > 0 ? src + static_cast<long>(idx[0]) * srcStride : src;
@@ -145,7 +147,7 @@ inline void evalLimitFixed<3>(const float* src, int srcStride, const LimitStenci
                               int start, int end) {
     for (int i = start; i < end; ++i) {
         __m128 p = _mm_setzero_ps(), u = _mm_setzero_ps(), v = _mm_setzero_ps();
-        const int first = t.offsets[i], n = t.offsets[i + 1] - first;
+        const int first = t.offsets[i], n = t.sizes[i];
         const int* idx = t.indices + first;
         const float* w = t.weights + t.weightOffsets[i];
         const __m128 s0 = n > 0 ? load3(src + static_cast<long>(idx[0]) * srcStride) : _mm_setzero_ps();

@@ -89,6 +89,13 @@ bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor
                    const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc, float* dstDv,
                    const BufferDescriptor& dvDesc, float* dstNormal, const BufferDescriptor& normalDesc,
                    const LimitStencilTable& table, const MeshNormalTable* fallback, int start, int& end) {
+    // O(1): the per-stencil arrays agree in length (what each stencil's run holds is not looked
+    // at per call; VulkanLimitStencilTable checks it once, on upload).
+    if (table.offsets.size() != table.sizes.size() || table.weightOffsets.size() != table.sizes.size())
+        throw std::invalid_argument("EvalLimitStencils: inconsistent LimitStencilTable arrays (" +
+                                    std::to_string(table.sizes.size()) + " sizes, " +
+                                    std::to_string(table.offsets.size()) + " offsets, " +
+                                    std::to_string(table.weightOffsets.size()) + " weight offsets)");
     if (!checkLimitArguments(src != nullptr, srcDesc, {dstPosition != nullptr, positionDesc},
                                       {dstDu != nullptr, duDesc}, {dstDv != nullptr, dvDesc},
                                       {dstNormal != nullptr, normalDesc}, table.numStencils(),

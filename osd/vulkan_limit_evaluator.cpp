@@ -20,7 +20,7 @@ extern const std::size_t mesh_normals_comp_words;
 
 namespace {
 
-constexpr uint32_t kLimitBindings = 11;  // table (4), source, 4 outputs, fallback table (2)
+constexpr uint32_t kLimitBindings = 12;  // table (5), source, 4 outputs, fallback table (2)
 constexpr uint32_t kLimitPushWords = 7;  // 5 float offsets, start, end
 constexpr uint32_t kNormalBindings = 4;  // table (2), source, destination
 constexpr uint32_t kNormalPushWords = 4;
@@ -78,8 +78,9 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
 
     const detail::BoundBuffer source = detail::bindAligned(ctx_, src.buffer, src.byteOffset, srcDesc, call);
     std::vector<VkDescriptorBufferInfo> infos = {
-        {table.offsets(), 0, VK_WHOLE_SIZE}, {table.indices(), 0, VK_WHOLE_SIZE},
-        {table.weightOffsets(), 0, VK_WHOLE_SIZE}, {table.weights(), 0, VK_WHOLE_SIZE}, source.info};
+        {table.sizes(), 0, VK_WHOLE_SIZE},         {table.offsets(), 0, VK_WHOLE_SIZE},
+        {table.indices(), 0, VK_WHOLE_SIZE},       {table.weightOffsets(), 0, VK_WHOLE_SIZE},
+        {table.weights(), 0, VK_WHOLE_SIZE},       source.info};
     std::vector<uint32_t> words{source.floatOffset};
     std::vector<int32_t> constants{srcDesc.length, srcDesc.stride};
     int32_t mask = 0;

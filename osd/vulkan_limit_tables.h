@@ -16,10 +16,14 @@ inline namespace v0 {
 // A LimitStencilTable uploaded once to device-local storage buffers, for VulkanLimitEvaluator.
 class VulkanLimitStencilTable : public detail::PooledTableBuffers {
 public:
-    // Copies the table's four arrays through one staging buffer (waits).
+    // Copies the table's five arrays through one staging buffer (waits); std::invalid_argument
+    // when they are inconsistent (a run or a weight triple outside its pool included).
     VulkanLimitStencilTable(VulkanContext& ctx, const LimitStencilTable& table)
-        : PooledTableBuffers(ctx, table.numSourceVertices, table.offsets, table.indices, table.weightOffsets,
-                             table.weights, "LimitStencilTable") {}
+        : PooledTableBuffers(ctx, {table.numSourceVertices, &table.sizes, table.offsets, table.indices,
+                                   table.weightOffsets, table.weights, 3},
+                             "LimitStencilTable") {}
+
+    using PooledTableBuffers::sizes;
 };
 
 class VulkanMeshNormalTable {

@@ -14,8 +14,10 @@ inline namespace v0 {
 
 namespace detail {
 
-// The four arrays of a pooled stencil table (StencilTable, LimitStencilTable: offsets, indices,
-// per-stencil weight offsets, the weight pool) in device-local storage buffers.
+// The arrays of a pooled stencil table in device-local storage buffers: StencilTable's four
+// (offsets, numStencils + 1 of them; indices; per-stencil weight offsets; the weight pool), or
+// LimitStencilTable's five (one size and one offset per stencil, since runs of sources are
+// shared; the pool of runs; weight offsets; the pool of weight triples).
 class PooledTableBuffers {
 public:
     int numStencils() const { return numStencils_; }
@@ -26,17 +28,32 @@ public:
     VkBuffer weights() const { return weights_.buffer(); }
     VkDevice device() const { return device_; }
 
+    // A table's arrays as the constructor reads them. sizes null: CSR, stencil i's entries
+    // [offsets[i], offsets[i + 1]); else stencil i's are [offsets[i], offsets[i] + sizes[i]).
+    // weightsPerEntry: how many weights each entry has in the pool (1, or 3 for a limit table).
+    struct HostArrays {
+        int numSourceVertices;
+        const std::vector<int>* sizes;
+        const std::vector<int>& offsets;
+        const std::vector<int>& indices;
+        const std::vector<int>& weightOffsets;
+        const std::vector<float>& weights;
+        int weightsPerEntry;
+    };
+
 protected:
     // Copies the arrays through one staging buffer (waits); std::invalid_argument naming `table`
-    // ("StencilTable") when they are inconsistent.
-    PooledTableBuffers(VulkanContext& ctx, int numSourceVertices, const std::vector<int>& offsets,
-                       const std::vector<int>& indices, const std::vector<int>& weightOffsets,
-                       const std::vector<float>& weights, const char* table);
+    // ("StencilTable") when they are inconsistent: arrays of the wrong lengths, or a stencil whose
+    // entries or weights reach outside their arrays (the shader would read past them).
+    PooledTableBuffers(VulkanContext& ctx, const HostArrays& arrays, const char* table);
+
+    // The per-stencil sizes (VK_NULL_HANDLE for a CSR table).
+    VkBuffer sizes() const { return sizes_.buffer(); }
 
 private:
     VkDevice device_;
     int numStencils_ = 0, numSourceVertices_ = 0;
-    DeviceBuffer offsets_, indices_, weightOffsets_, weights_;
+    DeviceBuffer sizes_, offsets_, indices_, weightOffsets_, weights_;
 };
 
 }  // namespace detail
@@ -44,8 +61,9 @@ private:
 class VulkanStencilTable : public detail::PooledTableBuffers {
 public:
     VulkanStencilTable(VulkanContext& ctx, const StencilTable& table)
-        : PooledTableBuffers(ctx, table.numSourceVertices, table.offsets, table.indices, table.weightOffsets,
-                             table.weights, "StencilTable") {}
+        : PooledTableBuffers(ctx, {table.numSourceVertices, nullptr, table.offsets, table.indices, table.weightOffsets,
+                                   table.weights, 1},
+                             "StencilTable") {}
 };
 
 }  // namespace v0

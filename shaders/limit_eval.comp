@@ -1,4 +1,5 @@
 // GLSL mirror of kernels/limit_kernel.h: one invocation per limit stencil gathers its support
+// (the run indices[offsets[i] .. offsets[i] + sizes[i]), perhaps shared with other stencils)
 // once, weighing each source with the entry's (position, dU, dV) triple
 // weights[weightOffsets[i] + 3k + 0, 1, 2] (the tangents relative to the first source, as the
 // host), and writes the outputs OUTPUTS selects; the normal is
@@ -23,17 +24,18 @@ const bool WRITE_DV = (OUTPUTS & 4) != 0;
 const bool WRITE_NORMAL = (OUTPUTS & 8) != 0;
 const bool USE_FALLBACK = (OUTPUTS & 16) != 0;
 
-layout(std430, set = 0, binding = 0) readonly buffer Offsets { int offsets[]; };  // numStencils + 1
-layout(std430, set = 0, binding = 1) readonly buffer Indices { int indices[]; };
-layout(std430, set = 0, binding = 2) readonly buffer WeightOffsets { int weightOffsets[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Weights { float weights[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Src { float src[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer Position { float position[]; };
-layout(std430, set = 0, binding = 6) writeonly buffer Du { float du[]; };
-layout(std430, set = 0, binding = 7) writeonly buffer Dv { float dv[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer Normal { float normal[]; };
-layout(std430, set = 0, binding = 9) readonly buffer FallbackOffsets { int fallbackOffsets[]; };
-layout(std430, set = 0, binding = 10) readonly buffer FallbackCorners { int fallbackCorners[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Sizes { int sizes[]; };      // numStencils
+layout(std430, set = 0, binding = 1) readonly buffer Offsets { int offsets[]; };  // numStencils; runs may be shared
+layout(std430, set = 0, binding = 2) readonly buffer Indices { int indices[]; };
+layout(std430, set = 0, binding = 3) readonly buffer WeightOffsets { int weightOffsets[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Weights { float weights[]; };
+layout(std430, set = 0, binding = 5) readonly buffer Src { float src[]; };
+layout(std430, set = 0, binding = 6) writeonly buffer Position { float position[]; };
+layout(std430, set = 0, binding = 7) writeonly buffer Du { float du[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer Dv { float dv[]; };
+layout(std430, set = 0, binding = 9) writeonly buffer Normal { float normal[]; };
+layout(std430, set = 0, binding = 10) readonly buffer FallbackOffsets { int fallbackOffsets[]; };
+layout(std430, set = 0, binding = 11) readonly buffer FallbackCorners { int fallbackCorners[]; };
 
 layout(push_constant) uniform Push {
     uint srcOffset;  // floats before element 0 in each bound range
@@ -66,7 +68,7 @@ void main() {
     float p[LENGTH], u[LENGTH], v[LENGTH];
     for (int c = 0; c < LENGTH; ++c) p[c] = u[c] = v[c] = 0.0;
     const int first = offsets[i];
-    const int n = offsets[i + 1u] - first;
+    const int n = sizes[i];
     int w = weightOffsets[i];
     const uint s0 = n > 0 ? pc.srcOffset + uint(indices[first]) * uint(SRC_STRIDE) : 0u;
     for (int k = 0; k < n; ++k, w += 3) {

@@ -15,9 +15,17 @@ LimitStencilTable randomLimitTable(int numStencils, int numSources, unsigned see
     t.numSourceVertices = numSources;
     std::vector<std::pair<int, int>> runs;  // (size, offset) of each run so far
     for (int i = 0; i < numStencils; ++i) {
-        const int size = 1 + int(rng() % 24);
-        for (int k = 0; k < size; ++k) t.indices.push_back(int(rng() % unsigned(numSources)));
-        t.offsets.push_back(int(t.indices.size()));
+        int size = 0;
+        if (i > 0 && rng() % 3 == 0) {  // an earlier stencil's run of sources: offsets go back
+            const int j = int(rng() % unsigned(i));
+            size = t.sizes[j];
+            t.offsets.push_back(t.offsets[j]);
+        } else {
+            size = 1 + int(rng() % 24);
+            t.offsets.push_back(int(t.indices.size()));
+            for (int k = 0; k < size; ++k) t.indices.push_back(int(rng() % unsigned(numSources)));
+        }
+        t.sizes.push_back(size);
         int shared = -1;
         if (rng() % 3 == 0)
             for (const auto& [s, at] : runs)
@@ -57,8 +65,9 @@ CornerLevel cornerLevel(int level) {
         // The first triple: (next, opposite, previous) of a quad, (next, previous, previous) of a triangle.
         const int* triple = &mn.corners[3 * std::size_t(mn.offsets[v])];
         const int next = triple[0], prev = triple[2];
-        t.indices.insert(t.indices.end(), {v, next, prev});
+        t.sizes.push_back(3);
         t.offsets.push_back(int(t.indices.size()));
+        t.indices.insert(t.indices.end(), {v, next, prev});
         t.weightOffsets.push_back(int(t.weights.size()));
         if (v % 11 == 5)
             t.weights.insert(t.weights.end(), {1, 0, 0, 0, 0, 0, 0, 0, 0});

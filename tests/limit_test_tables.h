@@ -1,7 +1,8 @@
 // Limit stencil tables for the evaluator tests, built here so that they test the evaluators
-// alone: random tables (pooled weights, supports of 1-24 sources), and "corner" tables over a
-// refined bench torus whose tangents run along each vertex's first face's edges, some made
-// parallel or zero on purpose (the degenerate fallback). Also the plain reference loop.
+// alone: random tables (pooled runs of sources and weights, supports of 1-24 sources), and
+// "corner" tables over a refined bench torus whose tangents run along each vertex's first face's
+// edges, some made parallel or zero on purpose (the degenerate fallback). Also the plain
+// reference loop.
 #pragma once
 
 #include <vector>
@@ -13,7 +14,9 @@
 namespace quadtri::test {
 
 // numStencils stencils over numSources sources; position weights sum to 1, tangent weights to
-// 0; about a third of the stencils share a weight run with an earlier one.
+// 0; about a third of the stencils read an earlier one's run of sources (so offsets are not
+// monotonic; runs are unsorted and may repeat a source), and about a third share a weight run
+// with an earlier one.
 LimitStencilTable randomLimitTable(int numStencils, int numSources, unsigned seed);
 
 // A refined torus level: its 3-float positions (packed), its MeshNormalTable and a table over

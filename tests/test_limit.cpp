@@ -6,6 +6,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <thread>
@@ -258,6 +259,7 @@ TEST(LimitStencils, FacesOnlyLevelGivesTheSameTable) {
         full.refineUniform(2, TopologyDetail::Full);
         const LimitStencilTable a = facesOnly.limitStencils(2), b = full.limitStencils(2);
         EXPECT_EQ(facesOnly.detail(2), TopologyDetail::FacesOnly) << mesh;
+        EXPECT_EQ(a.sizes, b.sizes) << mesh;
         EXPECT_EQ(a.offsets, b.offsets) << mesh;
         EXPECT_EQ(a.indices, b.indices) << mesh;
         EXPECT_EQ(a.weightOffsets, b.weightOffsets) << mesh;
@@ -334,6 +336,7 @@ TEST(LimitStencils, SameTableOnAnyNumberOfThreads) {
     tbb::task_arena(1).execute([&] { serial = r.refiner->limitStencils(3); });
     tbb::task_arena(4).execute([&] { parallel = r.refiner->limitStencils(3); });
     ASSERT_GT(serial.numStencils(), 32768);
+    EXPECT_EQ(serial.sizes, parallel.sizes);
     EXPECT_EQ(serial.offsets, parallel.offsets);
     EXPECT_EQ(serial.indices, parallel.indices);
     EXPECT_EQ(serial.weightOffsets, parallel.weightOffsets);
@@ -353,22 +356,35 @@ TEST(LimitStencils, ConcurrentReadersGetTheSameTable) {
     for (auto& table : tables) threads.emplace_back([&] { table = refiner.limitStencils(3); });
     for (auto& thread : threads) thread.join();
     for (const LimitStencilTable& table : tables) {
+        EXPECT_EQ(table.sizes, reference.sizes);
+        EXPECT_EQ(table.offsets, reference.offsets);
         EXPECT_EQ(table.indices, reference.indices);
         EXPECT_EQ(table.weightOffsets, reference.weightOffsets);
         EXPECT_EQ(table.weights, reference.weights);
     }
 }
 
-// Identical masks share their weights: on the torus, where every vertex is regular, the whole
-// level's limit table holds one mask of 9 entries, 27 floats.
+// Identical masks share their weights: on the torus, where every vertex is regular, every
+// stencil's 9 weight triples are one mask's, in the order of its ring's vertex numbers (the
+// runs of sources ascend), so the pool holds that mask once per ordering that occurs, far fewer
+// than the stencils.
 TEST(LimitStencils, RegularMasksArePooled) {
     Options options;
     options.scheme = Scheme::CatmullClark;
     const RefinedMesh r = refineMesh("osd/catmark_torus.obj", 2, options);
     const LimitStencilTable table = r.refiner->limitStencils(2);
-    EXPECT_EQ(table.weights.size(), 27u);
     EXPECT_EQ(table.numEntries(), 9u * table.numStencils());
-    EXPECT_EQ(table.bytes(), (table.offsets.size() + table.indices.size() + table.weightOffsets.size()) * sizeof(int) +
+    auto sortedTriples = [&](int i) {
+        std::vector<std::array<float, 3>> triples;
+        for (int k = 0; k < 9; ++k) triples.push_back({table.weightsOf(i)[3 * k], table.weightsOf(i)[3 * k + 1], table.weightsOf(i)[3 * k + 2]});
+        std::sort(triples.begin(), triples.end());
+        return triples;
+    };
+    for (int i = 0; i < table.numStencils(); ++i) ASSERT_EQ(sortedTriples(i), sortedTriples(0)) << "stencil " << i;
+    EXPECT_EQ(table.weights.size() % 27, 0u);
+    EXPECT_LT(10 * table.weights.size(), 27u * table.numStencils());
+    EXPECT_EQ(table.bytes(), (table.sizes.size() + table.offsets.size() + table.indices.size() +
+                              table.weightOffsets.size()) * sizeof(int) +
                                  table.weights.size() * sizeof(float));
 }
 

@@ -310,6 +310,8 @@ std::string messageOf(const std::function<void()>& call) {
 
 TEST(LimitEvaluator, BadArgumentsGiveTheSameMessageOnBothEvaluators) {
     const LimitStencilTable t = randomLimitTable(10, 8, 1);
+    LimitStencilTable shortOffsets = t;
+    shortOffsets.offsets.pop_back();
     const CornerLevel L = cornerLevel(1);
     std::vector<float> src(64, 1.0f), out(256);
     const BufferDescriptor bad(0, 3, 2), four(0, 4, 4);
@@ -336,6 +338,8 @@ TEST(LimitEvaluator, BadArgumentsGiveTheSameMessageOnBothEvaluators) {
          "EvalLimitStencils: range [4, 11) outside the table's 10 stencils"},
         {[&](auto e) { e(nullptr, kPacked, o, kPacked, nullptr, kPacked, nullptr, kPacked, nullptr, kPacked, t, nullptr, 0, -1); },
          "EvalLimitStencils: null source buffer"},
+        {[&](auto e) { e(s, kPacked, o, kPacked, nullptr, kPacked, nullptr, kPacked, nullptr, kPacked, shortOffsets, nullptr, 0, -1); },
+         "EvalLimitStencils: inconsistent LimitStencilTable arrays (10 sizes, 9 offsets, 10 weight offsets)"},
     };
     for (const Case& c : cases) {
         const std::string cpu = messageOf([&] { c.call(&CpuEvaluator::EvalLimitStencils); });

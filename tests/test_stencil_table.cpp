@@ -289,9 +289,9 @@ TEST(WeightSharing, OnlyBitwiseEqualWeightsShare) {
     EXPECT_EQ(pool.intern(copy, 4), first) << "an equal sequence elsewhere in memory";
     const int apart = pool.intern(oneUlp, 4);
     EXPECT_NE(apart, first) << "one ulp apart";
-    EXPECT_EQ(pool.weights()[std::size_t(apart) + 2], oneUlp[2]);
+    EXPECT_EQ(pool.values()[std::size_t(apart) + 2], oneUlp[2]);
     EXPECT_NE(pool.intern(negativeZero, 1), pool.intern(zero, 1)) << "-0.0 == 0.0, but not bitwise";
-    EXPECT_EQ(pool.weights().size(), 4u + 4u + 1u + 1u);
+    EXPECT_EQ(pool.values().size(), 4u + 4u + 1u + 1u);
 
     // In a table: weights rounded to float first, so doubles that round alike do share.
     StencilTableD d;
@@ -323,16 +323,16 @@ TEST(WeightPool, GrowingKeepsEveryOffset) {
     std::size_t total = 0;
     for (std::size_t s = 0; s < sequences.size(); ++s) {
         const std::vector<float>& w = sequences[s];
-        ASSERT_LE(std::size_t(offsets[s]) + w.size(), pool.weights().size()) << "sequence " << s;
-        ASSERT_TRUE(std::equal(w.begin(), w.end(), pool.weights().begin() + offsets[s])) << "sequence " << s;
+        ASSERT_LE(std::size_t(offsets[s]) + w.size(), pool.values().size()) << "sequence " << s;
+        ASSERT_TRUE(std::equal(w.begin(), w.end(), pool.values().begin() + offsets[s])) << "sequence " << s;
         ASSERT_EQ(pool.intern(w.data(), int(w.size())), offsets[s]) << "sequence " << s;
         total += w.size();
     }
-    EXPECT_EQ(pool.weights().size(), total) << "a sequence was stored twice";
+    EXPECT_EQ(pool.values().size(), total) << "a sequence was stored twice";
 
-    const std::vector<float> taken = pool.takeWeights();
+    const std::vector<float> taken = pool.take();
     EXPECT_EQ(taken.size(), total);
-    EXPECT_TRUE(pool.weights().empty());
+    EXPECT_TRUE(pool.values().empty());
     EXPECT_EQ(pool.intern(sequences[7].data(), int(sequences[7].size())), 0) << "the emptied pool starts afresh";
 }
 

@@ -198,6 +198,19 @@ std::string outcome(Eval&& eval) {
     }
 }
 
+// The device reads whatever the table says: offsets that do not span the indices, or a stencil
+// whose weights reach past the pool, are refused on upload.
+TEST_F(VulkanTest, InconsistentStencilTablesAreRefused) {
+    const StencilTable good = handCheckedTable();
+    StencilTable shortIndices = good, pastThePool = good;
+    shortIndices.indices.pop_back();
+    pastThePool.weightOffsets.back() = int(good.weights.size()) - good.size(good.numStencils() - 1) + 1;
+    for (const StencilTable& t : {shortIndices, pastThePool})
+        EXPECT_EQ(outcome([&] { const VulkanStencilTable uploaded(*ctx, t); }),
+                  "rejected: VulkanStencilTable: inconsistent StencilTable arrays");
+    EXPECT_EQ(outcome([&] { const VulkanStencilTable uploaded(*ctx, good); }), "accepted");
+}
+
 TEST_F(VulkanTest, SameArgumentChecksAsHostEvaluators) {
     const StencilTable t = handCheckedTable();
     VulkanStencilTable table(*ctx, t);

@@ -205,6 +205,21 @@ std::string messageOf(const std::function<void()>& call) {
     return "(no exception)";
 }
 
+// The device reads whatever the table's arrays say: a table whose arrays disagree, or whose run
+// or weights reach past their pool, is refused on upload.
+TEST_F(VulkanTest, InconsistentLimitTablesAreRefused) {
+    const LimitStencilTable good = randomLimitTable(10, 8, 1);
+    std::vector<LimitStencilTable> bad(4, good);
+    bad[0].sizes.pop_back();
+    bad[1].offsets.push_back(0);
+    bad[2].offsets[3] = int(good.indices.size()) - good.sizes[3] + 1;
+    bad[3].weightOffsets[5] = int(good.weights.size()) - 3 * good.sizes[5] + 1;
+    for (const LimitStencilTable& t : bad)
+        EXPECT_EQ(messageOf([&] { const VulkanLimitStencilTable uploaded(*ctx, t); }),
+                  "VulkanLimitStencilTable: inconsistent LimitStencilTable arrays");
+    EXPECT_EQ(messageOf([&] { const VulkanLimitStencilTable uploaded(*ctx, good); }), "(no exception)");
+}
+
 TEST_F(VulkanTest, LimitArgumentChecksMatchCpu) {
     VulkanLimitEvaluator eval(*ctx);
     const LimitStencilTable table = randomLimitTable(10, 8, 1);

@@ -1,6 +1,6 @@
 // Building limit stencil tables (docs/limit.md): one LimitMask per vertex of a level from the
 // scheme's hook (SchemeRules::limitMask), in double; composition over the control vertices; the
-// float table with pooled weight triples.
+// float table with pooled runs of sources and pooled weight triples.
 #pragma once
 
 #include <cstddef>
@@ -14,9 +14,9 @@
 namespace quadtri {
 inline namespace v0 {
 
-// Plain CSR with three double weights per entry, interleaved (position, dU, dV), as
-// LimitStencilTable lays them out: stencil i's entries are [offsets[i], offsets[i] + sizes[i]),
-// entry k's weights at weights[3k .. 3k + 3).
+// Plain CSR with three double weights per entry, interleaved (position, dU, dV) as in
+// LimitStencilTable, but nothing pooled: stencil i's entries are [offsets[i], offsets[i] + sizes[i]),
+// in the order they were built, entry k's weights at weights[3k .. 3k + 3).
 struct LimitStencilTableD {
     int numSourceVertices = 0;
     std::vector<int> sizes;
@@ -38,7 +38,9 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
 LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
                                         std::size_t maxBytes = ~std::size_t(0));
 
-// Rounded to float, each stencil's weight triples interned in the pool.
+// Rounded to float: each stencil's entries sorted by source (a source listed twice becomes one
+// entry, its weights added in double), its run of sources and its weight triples each interned in
+// their pool. Serial and in stencil order, so the table is the same whoever built `table`.
 LimitStencilTable toFloatTable(const LimitStencilTableD& table);
 
 std::size_t bytesOf(const LimitStencilTableD& table);

@@ -105,7 +105,7 @@ public:
             throw std::logic_error("StencilWriter: " + std::to_string(stencils_) + " stencils written, " +
                                    std::to_string(table_.numStencils()) + " announced");
         table_.indices.resize(entries_);
-        table_.weights = pool_.takeWeights();
+        table_.weights = pool_.take();
     }
 
 private:
@@ -130,7 +130,7 @@ private:
 
     bool sameAsPrevious(int n) const {
         if (previousOffset_ < 0 || n != previousSize_) return false;
-        const float* previous = pool_.weights().data() + previousOffset_;
+        const float* previous = pool_.values().data() + previousOffset_;
         for (int k = 0; k < n; ++k)
             if (bitsOf(maskWeights_[k]) != bitsOf(previous[k])) return false;
         return true;

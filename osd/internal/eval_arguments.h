@@ -47,9 +47,10 @@ bool checkLimitArguments(bool srcPresent, const BufferDescriptor& srcDesc, const
                          const LimitOutputArgument& normal, int numStencils, int numSources, int fallbackVertices,
                          int start, int& end);
 
-// The host evaluators' EvalLimitStencils arguments checked (checkLimitArguments) and turned into
-// what kernels::evalLimitStencils reads (outputs.fallback points into the struct itself, so it is
-// filled in place); returns false when the range is empty.
+// The host evaluators' EvalLimitStencils arguments checked (the table's per-stencil arrays of
+// one length, then checkLimitArguments) and turned into what kernels::evalLimitStencils reads
+// (outputs.fallback points into the struct itself, so it is filled in place); returns false when
+// the range is empty.
 struct HostLimitCall {
     const float* src;
     kernels::LimitStencilArrays arrays;
@@ -68,8 +69,8 @@ inline kernels::StencilArrays stencilArrays(const StencilTable& table) {
 }
 
 inline kernels::LimitStencilArrays limitArrays(const LimitStencilTable& table) {
-    return kernels::LimitStencilArrays{table.offsets.data(), table.indices.data(), table.weightOffsets.data(),
-                                       table.weights.data()};
+    return kernels::LimitStencilArrays{table.sizes.data(), table.offsets.data(), table.indices.data(),
+                                       table.weightOffsets.data(), table.weights.data()};
 }
 
 inline kernels::MeshNormalArrays meshNormalArrays(const MeshNormalTable& table) {
