@@ -49,7 +49,7 @@ void writeNormal(const float* src, int srcStride, __m128 u, __m128 v, const Limi
 void evalLimit3Avx2(const float* src, int srcStride, const LimitStencilArrays& t, const LimitOutputs& o, int start,
                     int end) {
     for (int i = start; i < end; ++i) {
-        const int first = t.offsets[i], n = t.offsets[i + 1] - first;
+        const int first = t.offsets[i], n = t.sizes[i];
         const int* idx = t.indices + first;
         const float* w = t.weights + t.weightOffsets[i];
         __m128 p0 = _mm_setzero_ps(), u0 = p0, v0 = p0, p1 = p0, u1 = p0, v1 = p0;
