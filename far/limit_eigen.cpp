@@ -72,7 +72,8 @@ Found laidOver(const Topology& t, int v, const Options& options, LimitMaskCache&
     if (!fan) return found;
     const LocalLimitMask& limit = cachedLimit(fan->configuration, options, cache);
     if (limit.rings == 0) return found;
-    const Neighbourhood ring = gatherNeighbourhood(t, v, fan->faces[0], limit.rings);
+    Neighbourhood& ring = cache.scratch().ring;
+    gatherNeighbourhood(t, v, fan->faces[0], limit.rings, cache.scratch().neighbourhood, ring);
     if (ring.vertices.size() != limit.position.size()) return found;
     found.settled = ring.signature == limit.signature;
     if (!found.settled && !acceptUnsettled) return found;
@@ -116,7 +117,7 @@ FollowedDown followDown(const PatchCut& cut, const Options& options, LimitMaskCa
             result.deeperLevels = depth;
             break;
         }
-        if (depth < kMaxDeeperLevels) steps.push_back(refinePatch(steps.back().child, steps.back().descendant, options));
+        if (depth < kMaxDeeperLevels) steps.push_back(refinePatch(steps.back().child, steps.back().descendant, options, cache.scratch().patch));
     }
     if (!result.analysis) return result;
     for (auto step = steps.rbegin(); step != steps.rend(); ++step) m = throughPatch(*step, m, step + 1 == steps.rend());
@@ -141,9 +142,11 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
         if (!found.analysis) {
             // The patch decides everything below, so a vertex with the same patch as one seen
             // before has that one's masks, to the bit.
-            const PatchCut cut = cutPatch(level, vertex);
-            std::vector<int> key = cut.key(options);
-            const FollowedDown* known = cache.findFollowed(key);
+            LimitScratch& scratch = cache.scratch();
+            const PatchCut& cut = scratch.cut;
+            cutPatch(level, vertex, scratch.patch, scratch.cut);
+            cut.key(options, scratch.key);
+            const FollowedDown* known = cache.findFollowed(scratch.key);
             FollowedDown computed;
             if (!known) {
                 computed = followDown(cut, options, cache);
@@ -153,7 +156,7 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
             report.settled = known->settled;
             report.deeperLevels = known->deeperLevels;
             for (const auto& [u, w] : known->mask) m[cut.source[u]] = w;
-            if (known == &computed) cache.insertFollowed(std::move(key), std::move(computed));
+            if (known == &computed) cache.insertFollowed(scratch.key, std::move(computed));
         }
     }
     if (!report.analysis) {

@@ -1,9 +1,6 @@
 // Reading a vertex of a level as a configuration (its fan, counter-clockwise) and labelling its
 // ring neighbourhood in an order two equal configurations share (docs/limit_eigen.md).
 #include <algorithm>
-#include <deque>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 
 #include "far/internal/crease.h"
@@ -121,32 +118,26 @@ namespace {
 
 int sharpnessClass(float s) { return isInfinite(s) ? 2 : isSharp(s) ? 1 : 0; }
 
-// The faces of `rings` face rings around v (sorted), and the vertices of the first `inner` rings.
-struct Region {
-    std::vector<int> faces;
-    std::unordered_set<int> inner;
-};
-
-Region ringFaces(const Topology& t, int v, int rings, int inner) {
-    Region region;
-    std::vector<int> vertices{v};
-    std::unordered_set<int> seenVertices{v}, seenFaces;
-    region.inner.insert(v);
+// Marks in `scratch` the faces of `rings` face rings around v (region) and their corners
+// (reached), those of the first `inner` rings with value 1.
+void markRegion(const Topology& t, int v, int rings, int inner, NeighbourhoodScratch& scratch) {
+    std::vector<int>& vertices = scratch.vertices;
+    std::vector<int>& faces = scratch.faces;
+    vertices.assign(1, v);
+    faces.clear();
+    scratch.reached.clear(t.numVertices);
+    scratch.region.clear(t.numFaces());
+    scratch.reached.mark(v, 1);
     size_t reached = 0;  // vertices before this index have had their faces added
     for (int ring = 0; ring < rings; ++ring) {
-        const size_t end = vertices.size(), firstNew = region.faces.size();
+        const size_t end = vertices.size(), firstNew = faces.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(vertices[reached]))
-                if (seenFaces.insert(f).second) region.faces.push_back(f);
-        for (size_t i = firstNew; i < region.faces.size(); ++i)
-            for (int u : t.verticesOfFace(region.faces[i]))
-                if (seenVertices.insert(u).second) {
-                    vertices.push_back(u);
-                    if (ring < inner) region.inner.insert(u);
-                }
+                if (scratch.region.mark(f)) faces.push_back(f);
+        for (size_t i = firstNew; i < faces.size(); ++i)
+            for (int u : t.verticesOfFace(faces[i]))
+                if (scratch.reached.mark(u, ring < inner ? 1 : 0)) vertices.push_back(u);
     }
-    std::sort(region.faces.begin(), region.faces.end());
-    return region;
 }
 
 }  // namespace
@@ -155,25 +146,28 @@ Region ringFaces(const Topology& t, int v, int rings, int inner) {
 // (the start face at v, a neighbour at the end of the edge it was reached across), and its
 // corners and edges are read counter-clockwise from there, so the labels depend on the faces
 // only. The signature numbers every vertex met; `vertices` keeps those of the first `rings`.
-Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int rings) {
-    const Region region = ringFaces(t, v, rings + 1, rings);
-    auto inRegion = [&](int f) { return std::binary_search(region.faces.begin(), region.faces.end(), f); };
-    Neighbourhood n;
-    std::unordered_map<int, int> labels;
+void gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, NeighbourhoodScratch& scratch,
+                         Neighbourhood& n) {
+    markRegion(t, v, rings + 1, rings, scratch);
+    n.vertices.clear();
+    n.signature.clear();
+    scratch.labels.clear(t.numVertices);
+    int labelled = 0;
     auto label = [&](int u) {
-        const auto [it, added] = labels.emplace(u, int(labels.size()));
-        if (added) {
-            if (region.inner.count(u)) n.vertices.push_back(u);
+        if (scratch.labels.mark(u, labelled)) {
+            ++labelled;
+            if (scratch.reached.marked(u) && scratch.reached.value(u) == 1) n.vertices.push_back(u);
             n.signature.push_back(sharpnessClass(t.vertSharpness[u]));
         }
-        return it->second;
+        return scratch.labels.value(u);
     };
     label(v);
-    std::unordered_set<int> visited{startFace};
-    std::deque<std::pair<int, int>> queue{{startFace, t.cornerOfVertex(startFace, v)}};
-    while (!queue.empty()) {
-        const auto [f, entry] = queue.front();
-        queue.pop_front();
+    scratch.visited.clear(t.numFaces());
+    scratch.visited.mark(startFace);
+    std::vector<std::pair<int, int>>& queue = scratch.queue;  // first in, first out from `head`
+    queue.assign(1, {startFace, t.cornerOfVertex(startFace, v)});
+    for (size_t head = 0; head < queue.size(); ++head) {
+        const auto [f, entry] = queue[head];
         const IndexSpan corners = t.verticesOfFace(f);
         const int size = corners.size();
         n.signature.push_back(-size);
@@ -182,11 +176,17 @@ Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int r
             const int e = t.edgeOfCorner(f, entry + i);
             n.signature.push_back(sharpnessClass(t.edgeSharpness[e]) * 4 + std::min(t.edgeFaceCount(e), 3));
             for (int g : t.facesOfEdge(e)) {
-                if (g == f || !inRegion(g) || !visited.insert(g).second) continue;
+                if (g == f || !scratch.region.marked(g) || !scratch.visited.mark(g)) continue;
                 queue.push_back({g, t.cornerOfVertex(g, corners[(entry + i + 1) % size])});
             }
         }
     }
+}
+
+Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int rings) {
+    NeighbourhoodScratch scratch;
+    Neighbourhood n;
+    gatherNeighbourhood(t, v, startFace, rings, scratch, n);
     return n;
 }
 

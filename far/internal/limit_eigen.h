@@ -6,11 +6,15 @@
 
 #include <array>
 #include <cstddef>
-#include <map>
+#include <cstdint>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "far/internal/limit_deeper.h"
 #include "far/internal/limit_mask.h"
+#include "far/internal/limit_scratch.h"
+#include "far/internal/local_matrix.h"
 #include <quadtri/far/options.h>
 #include <quadtri/far/topology.h>
 
@@ -48,9 +52,19 @@ struct FollowedDown {
     bool settled = false;
 };
 
+// What eigenLimit reuses from one vertex to the next (far/internal/limit_scratch.h).
+struct LimitScratch {
+    NeighbourhoodScratch neighbourhood;
+    PatchScratch patch;
+    Neighbourhood ring;     // the vertex's neighbourhood, as laidOver reads it
+    PatchCut cut;           // the vertex's patch
+    std::vector<int> key;   // cut's key
+};
+
 // Masks per configuration (the key encodes what decides the mask: the cyclic face sizes around
 // the vertex, its rule and sharp edges, the scheme's state near it; the generic path defines it).
-// Not shared between threads: each builder of a limit table holds its own.
+// Not shared between threads: each builder of a limit table holds its own, with the working
+// space of its vertices.
 class LimitMaskCache {
 public:
     const LocalLimitMask* find(const std::vector<int>& key) const {
@@ -72,10 +86,25 @@ public:
         if (followed_.size() < kMaxFollowed) followed_.emplace(std::move(patchKey), std::move(f));
     }
 
+    LimitScratch& scratch() { return scratch_; }
+
 private:
+    // Every int of the key mixed in: keys differ anywhere, often only far along.
+    struct KeyHash {
+        std::size_t operator()(const std::vector<int>& key) const {
+            std::uint64_t h = key.size();
+            for (int x : key) {
+                h = (h + std::uint32_t(x)) * 0x9E3779B97F4A7C15ull;
+                h ^= h >> 32;
+            }
+            return std::size_t(h);
+        }
+    };
     static constexpr std::size_t kMaxFollowed = 4096;
-    std::map<std::vector<int>, LocalLimitMask> masks_;
-    std::map<std::vector<int>, FollowedDown> followed_;
+    // Node-based: a mask's address stays put as others are added (FollowedDown::analysis).
+    std::unordered_map<std::vector<int>, LocalLimitMask, KeyHash> masks_;
+    std::unordered_map<std::vector<int>, FollowedDown, KeyHash> followed_;
+    LimitScratch scratch_;
 };
 
 // Appends to `out` (cleared by the caller) the limit masks of `vertex` under `rules`, over the

@@ -11,6 +11,7 @@
 
 #include <quadtri/far/options.h>
 #include <quadtri/far/topology.h>
+#include "far/internal/limit_scratch.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -57,6 +58,10 @@ struct Neighbourhood {
     std::vector<int> signature;
 };
 Neighbourhood gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings);
+// The same into `out` (its arrays reused), in `scratch`'s working space: for the limit build's
+// vertex after vertex.
+void gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings, NeighbourhoodScratch& scratch,
+                         Neighbourhood& out);
 
 // The local subdivision matrix S over the smallest ring neighbourhood N its masks keep closed:
 // row i is the child (one level down) of N's element i, in ring-relative order, over N.
