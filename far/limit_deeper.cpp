@@ -40,11 +40,14 @@ void cutPatch(const Topology& t, int vertex, PatchScratch& scratch, PatchCut& cu
     }
     std::vector<int>& sharpEdges = scratch.sharpEdges;
     sharpEdges.clear();
-    cut.sizes.reserve(faces.size());
+    cut.sizes.resize(faces.size());
+    std::size_t corners = 0;
+    for (size_t i = 0; i < faces.size(); ++i) corners += cut.sizes[i] = t.faceSize(faces[i]);
+    cut.corners.resize(corners);
+    int* corner = cut.corners.data();
     for (size_t i = 0; i < faces.size(); ++i) {
         const int f = faces[i];
-        cut.sizes.push_back(t.faceSize(f));
-        for (int u : t.verticesOfFace(f)) cut.corners.push_back(local.value(u));
+        for (int u : t.verticesOfFace(f)) *corner++ = local.value(u);
         if (t.faceHole[f]) cut.holes.push_back(int(i));
         for (int e : t.edgesOfFace(f))
             if (isSharp(t.edgeSharpness[e])) sharpEdges.push_back(e);

@@ -146,18 +146,24 @@ void markRegion(const Topology& t, int v, int rings, int inner, NeighbourhoodScr
 // (the start face at v, a neighbour at the end of the edge it was reached across), and its
 // corners and edges are read counter-clockwise from there, so the labels depend on the faces
 // only. The signature numbers every vertex met; `vertices` keeps those of the first `rings`.
-void gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, NeighbourhoodScratch& scratch,
-                         Neighbourhood& n) {
+bool gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, NeighbourhoodScratch& scratch,
+                         Neighbourhood& n, const std::vector<int>* expected) {
     markRegion(t, v, rings + 1, rings, scratch);
     n.vertices.clear();
     n.signature.clear();
+    bool differs = false;  // from `expected`, somewhere in the signature so far
+    auto see = [&](int x) {
+        const size_t at = n.signature.size();
+        n.signature.push_back(x);
+        if (expected && (at >= expected->size() || (*expected)[at] != x)) differs = true;
+    };
     scratch.labels.clear(t.numVertices);
     int labelled = 0;
     auto label = [&](int u) {
         if (scratch.labels.mark(u, labelled)) {
             ++labelled;
             if (scratch.reached.marked(u) && scratch.reached.value(u) == 1) n.vertices.push_back(u);
-            n.signature.push_back(sharpnessClass(t.vertSharpness[u]));
+            see(sharpnessClass(t.vertSharpness[u]));
         }
         return scratch.labels.value(u);
     };
@@ -170,17 +176,19 @@ void gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, Nei
         const auto [f, entry] = queue[head];
         const IndexSpan corners = t.verticesOfFace(f);
         const int size = corners.size();
-        n.signature.push_back(-size);
-        for (int i = 0; i < size; ++i) n.signature.push_back(label(corners[(entry + i) % size]));
+        see(-size);
+        for (int i = 0; i < size; ++i) see(label(corners[(entry + i) % size]));
         for (int i = 0; i < size; ++i) {
             const int e = t.edgeOfCorner(f, entry + i);
-            n.signature.push_back(sharpnessClass(t.edgeSharpness[e]) * 4 + std::min(t.edgeFaceCount(e), 3));
+            see(sharpnessClass(t.edgeSharpness[e]) * 4 + std::min(t.edgeFaceCount(e), 3));
             for (int g : t.facesOfEdge(e)) {
                 if (g == f || !scratch.region.marked(g) || !scratch.visited.mark(g)) continue;
                 queue.push_back({g, t.cornerOfVertex(g, corners[(entry + i + 1) % size])});
             }
         }
+        if (differs) return false;
     }
+    return true;
 }
 
 Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int rings) {

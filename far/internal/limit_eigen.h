@@ -59,6 +59,8 @@ struct LimitScratch {
     Neighbourhood ring;     // the vertex's neighbourhood, as laidOver reads it
     PatchCut cut;           // the vertex's patch
     std::vector<int> key;   // cut's key
+    std::vector<int> configurationKey;  // cachedLimit's
+    std::vector<std::pair<int, std::array<double, 3>>> entries;  // the vertex's masks, before they are sorted
 };
 
 // Masks per configuration (the key encodes what decides the mask: the cyclic face sizes around
@@ -89,15 +91,21 @@ public:
     LimitScratch& scratch() { return scratch_; }
 
 private:
-    // Every int of the key mixed in: keys differ anywhere, often only far along.
+    // Every int of the key mixed in (keys differ anywhere, often only far along), in four
+    // independent lanes: a patch's key is a thousand ints or so.
     struct KeyHash {
         std::size_t operator()(const std::vector<int>& key) const {
-            std::uint64_t h = key.size();
-            for (int x : key) {
-                h = (h + std::uint32_t(x)) * 0x9E3779B97F4A7C15ull;
-                h ^= h >> 32;
-            }
-            return std::size_t(h);
+            std::uint64_t lane[4] = {key.size(), 1, 2, 3};
+            const std::size_t n = key.size();
+            std::size_t i = 0;
+            for (; i + 4 <= n; i += 4)
+                for (int j = 0; j < 4; ++j) lane[j] = mix(lane[j] + std::uint32_t(key[i + j]));
+            for (; i < n; ++i) lane[0] = mix(lane[0] + std::uint32_t(key[i]));
+            return std::size_t(mix(lane[0] ^ mix(lane[1] ^ mix(lane[2] ^ mix(lane[3])))));
+        }
+        static std::uint64_t mix(std::uint64_t h) {
+            h *= 0x9E3779B97F4A7C15ull;
+            return h ^ (h >> 32);
         }
     };
     static constexpr std::size_t kMaxFollowed = 4096;

@@ -18,28 +18,27 @@ class StampedMarks {
 public:
     // Forgets every mark and makes room for indices below n.
     void clear(int n) {
-        if (stamps_.size() < std::size_t(n)) {
-            stamps_.resize(n, 0);
-            values_.resize(n);
-        }
+        if (marks_.size() < std::size_t(n)) marks_.resize(n);
         if (++stamp_ == 0) {  // the stamp wrapped: old marks could read as current
-            std::fill(stamps_.begin(), stamps_.end(), 0u);
+            std::fill(marks_.begin(), marks_.end(), Mark{});
             stamp_ = 1;
         }
     }
-    bool marked(int i) const { return stamps_[i] == stamp_; }
+    bool marked(int i) const { return marks_[i].stamp == stamp_; }
     // Marks i with `value`; false, and nothing changed, if i was marked already.
     bool mark(int i, int value = 0) {
-        if (stamps_[i] == stamp_) return false;
-        stamps_[i] = stamp_;
-        values_[i] = value;
+        if (marks_[i].stamp == stamp_) return false;
+        marks_[i] = {stamp_, value};
         return true;
     }
-    int value(int i) const { return values_[i]; }  // of a marked i
+    int value(int i) const { return marks_[i].value; }  // of a marked i
 
 private:
-    std::vector<std::uint32_t> stamps_;
-    std::vector<int> values_;
+    struct Mark {
+        std::uint32_t stamp = 0;  // marked while it equals stamp_
+        int value = 0;
+    };
+    std::vector<Mark> marks_;
     std::uint32_t stamp_ = 0;
 };
 

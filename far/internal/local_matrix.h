@@ -59,9 +59,10 @@ struct Neighbourhood {
 };
 Neighbourhood gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings);
 // The same into `out` (its arrays reused), in `scratch`'s working space: for the limit build's
-// vertex after vertex.
-void gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings, NeighbourhoodScratch& scratch,
-                         Neighbourhood& out);
+// vertex after vertex. With `expected`, the walk stops at the first face where the signature
+// departs from it, and returns false: the neighbourhood is not that one (`out` is then partial).
+bool gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings, NeighbourhoodScratch& scratch,
+                         Neighbourhood& out, const std::vector<int>* expected = nullptr);
 
 // The local subdivision matrix S over the smallest ring neighbourhood N its masks keep closed:
 // row i is the child (one level down) of N's element i, in ring-relative order, over N.
