@@ -168,8 +168,8 @@ bool gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, Nei
         return scratch.labels.value(u);
     };
     label(v);
-    scratch.visited.clear(t.numFaces());
-    scratch.visited.mark(startFace);
+    StampedMarks& region = scratch.region;
+    region.setValue(startFace, 1);
     std::vector<std::pair<int, int>>& queue = scratch.queue;  // first in, first out from `head`
     queue.assign(1, {startFace, t.cornerOfVertex(startFace, v)});
     for (size_t head = 0; head < queue.size(); ++head) {
@@ -182,7 +182,8 @@ bool gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, Nei
             const int e = t.edgeOfCorner(f, entry + i);
             see(sharpnessClass(t.edgeSharpness[e]) * 4 + std::min(t.edgeFaceCount(e), 3));
             for (int g : t.facesOfEdge(e)) {
-                if (g == f || !scratch.region.marked(g) || !scratch.visited.mark(g)) continue;
+                if (g == f || !region.marked(g) || region.value(g) == 1) continue;
+                region.setValue(g, 1);
                 queue.push_back({g, t.cornerOfVertex(g, corners[(entry + i + 1) % size])});
             }
         }

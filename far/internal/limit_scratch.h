@@ -32,6 +32,7 @@ public:
         return true;
     }
     int value(int i) const { return marks_[i].value; }  // of a marked i
+    void setValue(int i, int value) { marks_[i].value = value; }  // of a marked i
 
 private:
     struct Mark {
@@ -45,9 +46,8 @@ private:
 // gatherNeighbourhood's (far/vertex_configuration.cpp).
 struct NeighbourhoodScratch {
     StampedMarks reached;  // vertices of the region; value 1: within the inner rings
-    StampedMarks region;   // faces of the region
+    StampedMarks region;   // faces of the region; value 1: queued by the walk
     StampedMarks labels;   // vertices labelled so far; value: the label
-    StampedMarks visited;  // faces queued by the walk
     std::vector<int> vertices, faces;
     std::vector<std::pair<int, int>> queue;  // (face, entry corner)
 };
