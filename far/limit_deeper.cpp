@@ -15,15 +15,16 @@
 namespace quadtri {
 inline namespace v0 {
 
-void cutPatch(const Topology& t, int vertex, PatchScratch& scratch, PatchCut& cut) {
+void cutPatch(const Topology& t, int vertex, WalkScratch& scratch, PatchCut& cut) {
     for (std::vector<int>* a : {&cut.source, &cut.sizes, &cut.corners, &cut.creasePairs, &cut.holes, &cut.cornerVerts})
         a->clear();
     cut.creaseWeights.clear();
     cut.cornerWeights.clear();
-    StampedMarks& local = scratch.local;  // value: the vertex's number in the patch
-    std::vector<int>& faces = scratch.faces;
+    StampedMarks& local = scratch.vertices;  // value: the vertex's number in the patch
+    StampedMarks& inside = scratch.faces;
+    std::vector<int>& faces = scratch.faceList;
     local.clear(t.numVertices);
-    scratch.inside.clear(t.numFaces());
+    inside.clear(t.numFaces());
     faces.clear();
     auto addVertex = [&](int v) {
         if (local.mark(v, int(cut.source.size()))) cut.source.push_back(v);
@@ -34,7 +35,7 @@ void cutPatch(const Topology& t, int vertex, PatchScratch& scratch, PatchCut& cu
         const size_t end = cut.source.size(), firstNew = faces.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(cut.source[reached]))
-                if (scratch.inside.mark(f)) faces.push_back(f);
+                if (inside.mark(f)) faces.push_back(f);
         for (size_t i = firstNew; i < faces.size(); ++i)  // the older faces' corners are in already
             for (int u : t.verticesOfFace(faces[i])) addVertex(u);
     }
@@ -114,7 +115,7 @@ PatchStep refineCut(const PatchCut& cut, const Options& options) {
     return step;
 }
 
-PatchStep refinePatch(const Topology& t, int vertex, const Options& options, PatchScratch& scratch) {
+PatchStep refinePatch(const Topology& t, int vertex, const Options& options, WalkScratch& scratch) {
     PatchCut cut;
     cutPatch(t, vertex, scratch, cut);
     return refineCut(cut, options);

@@ -79,7 +79,7 @@ Found laidOver(const Topology& t, int v, const Options& options, LimitMaskCache&
     Neighbourhood& ring = cache.scratch().ring;
     // Unless an unsettled one will do, the walk stops where the neighbourhood departs from the
     // configuration's: most vertices of a seam-dense level do, early.
-    const bool alike = gatherNeighbourhood(t, v, fan->faces[0], limit.rings, cache.scratch().neighbourhood, ring,
+    const bool alike = gatherNeighbourhood(t, v, fan->faces[0], limit.rings, cache.scratch().walk, ring,
                                            acceptUnsettled ? nullptr : &limit.signature);
     if (!alike || ring.vertices.size() != limit.position.size()) return found;
     found.settled = ring.signature == limit.signature;
@@ -125,7 +125,8 @@ FollowedDown followDown(const PatchCut& cut, const Options& options, LimitMaskCa
             result.deeperLevels = depth;
             break;
         }
-        if (depth < kMaxDeeperLevels) steps.push_back(refinePatch(steps.back().child, steps.back().descendant, options, cache.scratch().patch));
+        if (depth < kMaxDeeperLevels)
+            steps.push_back(refinePatch(steps.back().child, steps.back().descendant, options, cache.scratch().walk));
     }
     if (!result.analysis) return result;
     SparseMask m(deepest.begin(), deepest.end());
@@ -154,7 +155,7 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
             // before has that one's masks, to the bit.
             LimitScratch& scratch = cache.scratch();
             const PatchCut& cut = scratch.cut;
-            cutPatch(level, vertex, scratch.patch, scratch.cut);
+            cutPatch(level, vertex, scratch.walk, scratch.cut);
             cut.key(options, scratch.key);
             const FollowedDown* known = cache.findFollowed(scratch.key);
             FollowedDown computed;

@@ -118,25 +118,26 @@ namespace {
 
 int sharpnessClass(float s) { return isInfinite(s) ? 2 : isSharp(s) ? 1 : 0; }
 
-// Marks in `scratch` the faces of `rings` face rings around v (region) and their corners
-// (reached), those of the first `inner` rings with value 1.
-void markRegion(const Topology& t, int v, int rings, int inner, NeighbourhoodScratch& scratch) {
-    std::vector<int>& vertices = scratch.vertices;
-    std::vector<int>& faces = scratch.faces;
+// Marks in `scratch` the faces of `rings` face rings around v (the region) and their corners,
+// those of the first `inner` rings with value 1.
+void markRegion(const Topology& t, int v, int rings, int inner, WalkScratch& scratch) {
+    std::vector<int>& vertices = scratch.vertexList;
+    std::vector<int>& faces = scratch.faceList;
+    StampedMarks &reachedVertices = scratch.vertices, &region = scratch.faces;
     vertices.assign(1, v);
     faces.clear();
-    scratch.reached.clear(t.numVertices);
-    scratch.region.clear(t.numFaces());
-    scratch.reached.mark(v, 1);
+    reachedVertices.clear(t.numVertices);
+    region.clear(t.numFaces());
+    reachedVertices.mark(v, 1);
     size_t reached = 0;  // vertices before this index have had their faces added
     for (int ring = 0; ring < rings; ++ring) {
         const size_t end = vertices.size(), firstNew = faces.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(vertices[reached]))
-                if (scratch.region.mark(f)) faces.push_back(f);
+                if (region.mark(f)) faces.push_back(f);
         for (size_t i = firstNew; i < faces.size(); ++i)
             for (int u : t.verticesOfFace(faces[i]))
-                if (scratch.reached.mark(u, ring < inner ? 1 : 0)) vertices.push_back(u);
+                if (reachedVertices.mark(u, ring < inner ? 1 : 0)) vertices.push_back(u);
     }
 }
 
@@ -146,7 +147,7 @@ void markRegion(const Topology& t, int v, int rings, int inner, NeighbourhoodScr
 // (the start face at v, a neighbour at the end of the edge it was reached across), and its
 // corners and edges are read counter-clockwise from there, so the labels depend on the faces
 // only. The signature numbers every vertex met; `vertices` keeps those of the first `rings`.
-bool gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, NeighbourhoodScratch& scratch,
+bool gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, WalkScratch& scratch,
                          Neighbourhood& n, const std::vector<int>* expected) {
     markRegion(t, v, rings + 1, rings, scratch);
     n.vertices.clear();
@@ -162,13 +163,13 @@ bool gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, Nei
     auto label = [&](int u) {
         if (scratch.labels.mark(u, labelled)) {
             ++labelled;
-            if (scratch.reached.marked(u) && scratch.reached.value(u) == 1) n.vertices.push_back(u);
+            if (scratch.vertices.marked(u) && scratch.vertices.value(u) == 1) n.vertices.push_back(u);
             see(sharpnessClass(t.vertSharpness[u]));
         }
         return scratch.labels.value(u);
     };
     label(v);
-    StampedMarks& region = scratch.region;
+    StampedMarks& region = scratch.faces;
     region.setValue(startFace, 1);
     std::vector<std::pair<int, int>>& queue = scratch.queue;  // first in, first out from `head`
     queue.assign(1, {startFace, t.cornerOfVertex(startFace, v)});
@@ -193,7 +194,7 @@ bool gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, Nei
 }
 
 Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int rings) {
-    NeighbourhoodScratch scratch;
+    WalkScratch scratch;
     Neighbourhood n;
     gatherNeighbourhood(t, v, startFace, rings, scratch, n);
     return n;

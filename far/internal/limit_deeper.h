@@ -38,9 +38,9 @@ struct PatchStep {
 constexpr int kPatchRings = 6;
 
 // Into `cut` (its arrays reused), in `scratch`'s working space.
-void cutPatch(const Topology& level, int vertex, PatchScratch& scratch, PatchCut& cut);
+void cutPatch(const Topology& level, int vertex, WalkScratch& scratch, PatchCut& cut);
 PatchStep refineCut(const PatchCut& cut, const Options& options);
-PatchStep refinePatch(const Topology& level, int vertex, const Options& options, PatchScratch& scratch);
+PatchStep refinePatch(const Topology& level, int vertex, const Options& options, WalkScratch& scratch);
 
 }  // namespace v0
 }  // namespace quadtri

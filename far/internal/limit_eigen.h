@@ -54,8 +54,7 @@ struct FollowedDown {
 
 // What eigenLimit reuses from one vertex to the next (far/internal/limit_scratch.h).
 struct LimitScratch {
-    NeighbourhoodScratch neighbourhood;
-    PatchScratch patch;
+    WalkScratch walk;       // the neighbourhood's and the patch's marks
     Neighbourhood ring;     // the vertex's neighbourhood, as laidOver reads it
     PatchCut cut;           // the vertex's patch
     std::vector<int> key;   // cut's key

@@ -43,20 +43,16 @@ private:
     std::uint32_t stamp_ = 0;
 };
 
-// gatherNeighbourhood's (far/vertex_configuration.cpp).
-struct NeighbourhoodScratch {
-    StampedMarks reached;  // vertices of the region; value 1: within the inner rings
-    StampedMarks region;   // faces of the region; value 1: queued by the walk
-    StampedMarks labels;   // vertices labelled so far; value: the label
-    std::vector<int> vertices, faces;
+// What gatherNeighbourhood (far/vertex_configuration.cpp) and cutPatch (far/limit_deeper.cpp)
+// mark and list. One walk at a time: each clears what it uses as it starts and neither calls the
+// other, so they share it, and it costs 8 bytes per vertex twice and per face once of the largest
+// level walked.
+struct WalkScratch {
+    StampedMarks vertices;  // reached; value: 1 within the neighbourhood's inner rings, or the patch's number
+    StampedMarks labels;    // the neighbourhood's vertices labelled so far; value: the label
+    StampedMarks faces;     // reached; value (the neighbourhood's): 1 once queued by the walk
+    std::vector<int> vertexList, faceList, sharpEdges;
     std::vector<std::pair<int, int>> queue;  // (face, entry corner)
-};
-
-// cutPatch's (far/limit_deeper.cpp).
-struct PatchScratch {
-    StampedMarks local;   // vertices in the patch; value: the patch's number for it
-    StampedMarks inside;  // faces in the patch
-    std::vector<int> faces, sharpEdges;
 };
 
 }  // namespace v0

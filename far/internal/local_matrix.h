@@ -61,7 +61,7 @@ Neighbourhood gatherNeighbourhood(const Topology& topology, int vertex, int star
 // The same into `out` (its arrays reused), in `scratch`'s working space: for the limit build's
 // vertex after vertex. With `expected`, the walk stops at the first face where the signature
 // departs from it, and returns false: the neighbourhood is not that one (`out` is then partial).
-bool gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings, NeighbourhoodScratch& scratch,
+bool gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings, WalkScratch& scratch,
                          Neighbourhood& out, const std::vector<int>* expected = nullptr);
 
 // The local subdivision matrix S over the smallest ring neighbourhood N its masks keep closed:
