@@ -92,7 +92,7 @@ std::vector<CaseSpec> caseList(bool quick) {
 // (the same schemes OpenSubdiv runs, so that the limit points agree), mixed under Schaefer-Warren
 // quadtri alone; levels 2-4 (--quick: 2, and the mixed torus at level 1: nearly every vertex
 // there is near a seam and its masks come from the locally refined patches of
-// far/limit_deeper.cpp, so each of its limit tables takes about 10 s to build at level 2).
+// far/limit_deeper.cpp, so each of its limit tables takes about 1 s to build at level 2).
 std::vector<CaseSpec> limitCaseList(bool quick) {
     std::vector<CaseSpec> cases;
     for (int level = 2; level <= (quick ? 2 : 4); ++level) {

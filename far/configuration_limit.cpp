@@ -97,22 +97,22 @@ std::optional<LocalLimitMask> analyseConfiguration(const VertexConfiguration& c,
 
 namespace {
 
-// The configuration's key (VertexConfiguration::key) and what else changes its masks.
-std::vector<int> cacheKey(const VertexConfiguration& c, const Options& options) {
+// The configuration's key (VertexConfiguration::key) and what else changes its masks, into k.
+void cacheKey(const VertexConfiguration& c, const Options& options, std::vector<int>& k) {
     const std::string key = c.key();
-    std::vector<int> k(key.begin(), key.end());
+    k.assign(key.begin(), key.end());
     k.push_back(options.smoothTriangles ? 1 : 0);
     k.push_back(int(options.creaseMethod));
-    return k;
 }
 
 }  // namespace
 
 const LocalLimitMask& cachedLimit(const VertexConfiguration& c, const Options& options, LimitMaskCache& cache) {
-    std::vector<int> key = cacheKey(c, options);
+    std::vector<int>& key = cache.scratch().configurationKey;
+    cacheKey(c, options, key);
     if (const LocalLimitMask* found = cache.find(key)) return *found;
     std::optional<LocalLimitMask> analysed = analyseConfiguration(c, options);
-    return cache.insert(std::move(key), analysed ? std::move(*analysed) : LocalLimitMask{});
+    return cache.insert(key, analysed ? std::move(*analysed) : LocalLimitMask{});
 }
 
 }  // namespace v0

@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "far/internal/crease.h"
 #include "far/internal/refine_topology.h"
@@ -17,29 +15,40 @@
 namespace quadtri {
 inline namespace v0 {
 
-PatchCut cutPatch(const Topology& t, int vertex) {
-    PatchCut cut;
-    std::unordered_map<int, int> local;
-    std::vector<int> faces;
-    std::unordered_set<int> inPatch;  // not a flag per face of the level: cut once per vertex
+void cutPatch(const Topology& t, int vertex, WalkScratch& scratch, PatchCut& cut) {
+    for (std::vector<int>* a : {&cut.source, &cut.sizes, &cut.corners, &cut.creasePairs, &cut.holes, &cut.cornerVerts})
+        a->clear();
+    cut.creaseWeights.clear();
+    cut.cornerWeights.clear();
+    StampedMarks& local = scratch.vertices;  // value: the vertex's number in the patch
+    StampedMarks& inside = scratch.faces;
+    std::vector<int>& faces = scratch.faceList;
+    local.clear(t.numVertices);
+    inside.clear(t.numFaces());
+    faces.clear();
     auto addVertex = [&](int v) {
-        if (local.emplace(v, int(cut.source.size())).second) cut.source.push_back(v);
+        if (local.mark(v, int(cut.source.size()))) cut.source.push_back(v);
     };
     addVertex(vertex);
     size_t reached = 0;
     for (int ring = 0; ring < kPatchRings; ++ring) {
-        const size_t end = cut.source.size();
+        const size_t end = cut.source.size(), firstNew = faces.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(cut.source[reached]))
-                if (inPatch.insert(f).second) faces.push_back(f);
-        for (size_t i = 0; i < faces.size(); ++i)
+                if (inside.mark(f)) faces.push_back(f);
+        for (size_t i = firstNew; i < faces.size(); ++i)  // the older faces' corners are in already
             for (int u : t.verticesOfFace(faces[i])) addVertex(u);
     }
-    std::vector<int> sharpEdges;
+    std::vector<int>& sharpEdges = scratch.sharpEdges;
+    sharpEdges.clear();
+    cut.sizes.resize(faces.size());
+    std::size_t corners = 0;
+    for (size_t i = 0; i < faces.size(); ++i) corners += cut.sizes[i] = t.faceSize(faces[i]);
+    cut.corners.resize(corners);
+    int* corner = cut.corners.data();
     for (size_t i = 0; i < faces.size(); ++i) {
         const int f = faces[i];
-        cut.sizes.push_back(t.faceSize(f));
-        for (int u : t.verticesOfFace(f)) cut.corners.push_back(local.at(u));
+        for (int u : t.verticesOfFace(f)) *corner++ = local.value(u);
         if (t.faceHole[f]) cut.holes.push_back(int(i));
         for (int e : t.edgesOfFace(f))
             if (isSharp(t.edgeSharpness[e])) sharpEdges.push_back(e);
@@ -47,8 +56,8 @@ PatchCut cutPatch(const Topology& t, int vertex) {
     std::sort(sharpEdges.begin(), sharpEdges.end());
     sharpEdges.erase(std::unique(sharpEdges.begin(), sharpEdges.end()), sharpEdges.end());
     for (int e : sharpEdges) {
-        cut.creasePairs.push_back(local.at(t.edgeVerts[2 * e]));
-        cut.creasePairs.push_back(local.at(t.edgeVerts[2 * e + 1]));
+        cut.creasePairs.push_back(local.value(t.edgeVerts[2 * e]));
+        cut.creasePairs.push_back(local.value(t.edgeVerts[2 * e + 1]));
         cut.creaseWeights.push_back(t.edgeSharpness[e]);
     }
     for (size_t i = 0; i < cut.source.size(); ++i)
@@ -56,12 +65,11 @@ PatchCut cutPatch(const Topology& t, int vertex) {
             cut.cornerVerts.push_back(int(i));
             cut.cornerWeights.push_back(t.vertSharpness[cut.source[i]]);
         }
-    return cut;
 }
 
-std::vector<int> PatchCut::key(const Options& options) const {
-    std::vector<int> k{int(source.size()), int(options.scheme), int(options.boundary), int(options.creaseMethod),
-                       options.smoothTriangles ? 1 : 0, options.leftHanded ? 1 : 0};
+void PatchCut::key(const Options& options, std::vector<int>& k) const {
+    k.assign({int(source.size()), int(options.scheme), int(options.boundary), int(options.creaseMethod),
+              options.smoothTriangles ? 1 : 0, options.leftHanded ? 1 : 0});
     auto ints = [&](const std::vector<int>& a) {
         k.push_back(int(a.size()));
         k.insert(k.end(), a.begin(), a.end());
@@ -81,7 +89,6 @@ std::vector<int> PatchCut::key(const Options& options) const {
     ints(cornerVerts);
     floats(creaseWeights);
     floats(cornerWeights);
-    return k;
 }
 
 PatchStep refineCut(const PatchCut& cut, const Options& options) {
@@ -108,8 +115,10 @@ PatchStep refineCut(const PatchCut& cut, const Options& options) {
     return step;
 }
 
-PatchStep refinePatch(const Topology& t, int vertex, const Options& options) {
-    return refineCut(cutPatch(t, vertex), options);
+PatchStep refinePatch(const Topology& t, int vertex, const Options& options, WalkScratch& scratch) {
+    PatchCut cut;
+    cutPatch(t, vertex, scratch, cut);
+    return refineCut(cut, options);
 }
 
 }  // namespace v0

@@ -6,6 +6,7 @@
 // descendant's masks are brought back through the patch tables: the same limit, exactly.
 #include "far/internal/limit_eigen.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 
@@ -24,6 +25,9 @@ constexpr int kMaxDeeperLevels = 10;
 
 // A mask as three weights per vertex of some level.
 using SparseMask = std::map<int, std::array<double, 3>>;  // ordered: the same table on every run
+// The same as a list, each vertex once, in no particular order (sorted into a SparseMask's order
+// before it becomes a LimitMask): what the common paths build, without a node per vertex.
+using MaskEntries = std::vector<std::pair<int, std::array<double, 3>>>;
 
 // Where there is no limit to analyse (a non-manifold vertex, one without faces or beside a hole)
 // or none needed (a fixed corner): the vertex itself, and the two edges of `face` at it (-1: its first face in
@@ -63,25 +67,30 @@ struct Found {
     bool settled = false;
 };
 
-// The configuration's masks at v of level t if its neighbourhood there is the configuration's own
-// (or, with `acceptUnsettled`, at least as large).
+// The configuration's masks at v of level t, appended to `m`, if its neighbourhood there is the
+// configuration's own (or, with `acceptUnsettled`, at least as large).
 Found laidOver(const Topology& t, int v, const Options& options, LimitMaskCache& cache, bool acceptUnsettled,
-               SparseMask& m) {
+               MaskEntries& m) {
     Found found;
     const std::optional<VertexFan> fan = fanOf(t, v, options);
     if (!fan) return found;
     const LocalLimitMask& limit = cachedLimit(fan->configuration, options, cache);
     if (limit.rings == 0) return found;
-    const Neighbourhood ring = gatherNeighbourhood(t, v, fan->faces[0], limit.rings);
-    if (ring.vertices.size() != limit.position.size()) return found;
+    Neighbourhood& ring = cache.scratch().ring;
+    // Unless an unsettled one will do, the walk stops where the neighbourhood departs from the
+    // configuration's: most vertices of a seam-dense level do, early.
+    const bool alike = gatherNeighbourhood(t, v, fan->faces[0], limit.rings, cache.scratch().walk, ring,
+                                           acceptUnsettled ? nullptr : &limit.signature);
+    if (!alike || ring.vertices.size() != limit.position.size()) return found;
     found.settled = ring.signature == limit.signature;
     if (!found.settled && !acceptUnsettled) return found;
     found.analysis = &limit;
     for (size_t k = 0; k < ring.vertices.size(); ++k) {
-        auto& w = m[ring.vertices[k]];
+        std::array<double, 3> w{};  // zero plus the weight, as a sum would start (a -0.0 weight turns +0.0)
         w[0] += limit.position[k];
         w[1] += limit.du[k];
         w[2] += limit.dv[k];
+        m.push_back({ring.vertices[k], w});
     }
     return found;
 }
@@ -106,19 +115,21 @@ FollowedDown followDown(const PatchCut& cut, const Options& options, LimitMaskCa
     FollowedDown result;
     std::vector<PatchStep> steps;
     steps.push_back(refineCut(cut, options));
-    SparseMask m;
+    MaskEntries deepest;  // the masks where the neighbourhood settled, over the last patch
     for (int depth = 1; depth <= kMaxDeeperLevels; ++depth) {
         const Found found = laidOver(steps.back().child, steps.back().descendant, options, cache,
-                                     depth == kMaxDeeperLevels, m);
+                                     depth == kMaxDeeperLevels, deepest);
         if (found.analysis) {
             result.analysis = found.analysis;
             result.settled = found.settled;
             result.deeperLevels = depth;
             break;
         }
-        if (depth < kMaxDeeperLevels) steps.push_back(refinePatch(steps.back().child, steps.back().descendant, options));
+        if (depth < kMaxDeeperLevels)
+            steps.push_back(refinePatch(steps.back().child, steps.back().descendant, options, cache.scratch().walk));
     }
     if (!result.analysis) return result;
+    SparseMask m(deepest.begin(), deepest.end());
     for (auto step = steps.rbegin(); step != steps.rend(); ++step) m = throughPatch(*step, m, step + 1 == steps.rend());
     result.mask.assign(m.begin(), m.end());
     return result;
@@ -129,7 +140,8 @@ FollowedDown followDown(const PatchCut& cut, const Options& options, LimitMaskCa
 EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& options, int firstFace,
                             LimitMaskCache& cache, LimitMask& out) {
     EigenLimitReport report;
-    SparseMask m;
+    MaskEntries& m = cache.scratch().entries;
+    m.clear();
     // Nothing to analyse at a non-manifold or isolated vertex or one beside a hole (its fan never
     // closes into a configuration); nothing needed at a fixed corner.
     const bool ownLimit = (level.vertFlags[vertex] & kVertexNonManifold) || level.vertexFaceCount(vertex) == 0 ||
@@ -141,9 +153,11 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
         if (!found.analysis) {
             // The patch decides everything below, so a vertex with the same patch as one seen
             // before has that one's masks, to the bit.
-            const PatchCut cut = cutPatch(level, vertex);
-            std::vector<int> key = cut.key(options);
-            const FollowedDown* known = cache.findFollowed(key);
+            LimitScratch& scratch = cache.scratch();
+            const PatchCut& cut = scratch.cut;
+            cutPatch(level, vertex, scratch.walk, scratch.cut);
+            cut.key(options, scratch.key);
+            const FollowedDown* known = cache.findFollowed(scratch.key);
             FollowedDown computed;
             if (!known) {
                 computed = followDown(cut, options, cache);
@@ -152,15 +166,18 @@ EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& op
             report.analysis = known->analysis;
             report.settled = known->settled;
             report.deeperLevels = known->deeperLevels;
-            for (const auto& [u, w] : known->mask) m[cut.source[u]] = w;
-            if (known == &computed) cache.insertFollowed(std::move(key), std::move(computed));
+            for (const auto& [u, w] : known->mask) m.push_back({cut.source[u], w});
+            if (known == &computed) cache.insertFollowed(scratch.key, std::move(computed));
         }
     }
     if (!report.analysis) {
-        m.clear();
-        ownPositionAndFaceEdges(level, vertex, firstFace, m);
+        SparseMask own;
+        ownPositionAndFaceEdges(level, vertex, firstFace, own);
+        m.assign(own.begin(), own.end());
         report.settled = isFixedCorner(level, vertex, options);  // exact there
     }
+    // Each vertex is in m once: in vertex order, as a SparseMask lists them.
+    std::sort(m.begin(), m.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     // Topology stores faces counter-clockwise seen from outside (left-handed input reversed), the
     // way the fan is read: dU × dV points outside.
     for (const auto& [u, w] : m) out.add(u, w[0], w[1], w[2]);

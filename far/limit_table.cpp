@@ -42,6 +42,19 @@ void append(const LimitStencilTableD& part, LimitStencilTableD& table) {
     table.weights.insert(table.weights.end(), part.weights.begin(), part.weights.end());
 }
 
+// Room in `table` for every part at once: no copy of what was joined so far.
+void reserveFor(const std::vector<LimitStencilTableD>& parts, LimitStencilTableD& table) {
+    std::size_t stencils = 0, entries = 0;
+    for (const LimitStencilTableD& part : parts) {
+        stencils += part.sizes.size();
+        entries += part.indices.size();
+    }
+    table.sizes.reserve(stencils);
+    table.offsets.reserve(stencils);
+    table.indices.reserve(entries);
+    table.weights.reserve(3 * entries);
+}
+
 // Vertices per part below which a level is not split.
 constexpr int kMinVerticesPerPart = 16384;
 
@@ -77,6 +90,7 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
     if (parts == 1) {
         table = std::move(built[0]);
     } else {
+        reserveFor(built, table);
         for (const LimitStencilTableD& part : built) append(part, table);
     }
     table.numSourceVertices = n;
@@ -136,6 +150,7 @@ LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const S
     if (parts == 1) {
         out = std::move(built[0]);
     } else {
+        reserveFor(built, out);
         for (const LimitStencilTableD& part : built) append(part, out);
     }
     out.numSourceVertices = inner.numSourceVertices;

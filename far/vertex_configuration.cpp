@@ -1,9 +1,6 @@
 // Reading a vertex of a level as a configuration (its fan, counter-clockwise) and labelling its
 // ring neighbourhood in an order two equal configurations share (docs/limit_eigen.md).
 #include <algorithm>
-#include <deque>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 
 #include "far/internal/crease.h"
@@ -121,32 +118,27 @@ namespace {
 
 int sharpnessClass(float s) { return isInfinite(s) ? 2 : isSharp(s) ? 1 : 0; }
 
-// The faces of `rings` face rings around v (sorted), and the vertices of the first `inner` rings.
-struct Region {
-    std::vector<int> faces;
-    std::unordered_set<int> inner;
-};
-
-Region ringFaces(const Topology& t, int v, int rings, int inner) {
-    Region region;
-    std::vector<int> vertices{v};
-    std::unordered_set<int> seenVertices{v}, seenFaces;
-    region.inner.insert(v);
+// Marks in `scratch` the faces of `rings` face rings around v (the region) and their corners,
+// those of the first `inner` rings with value 1.
+void markRegion(const Topology& t, int v, int rings, int inner, WalkScratch& scratch) {
+    std::vector<int>& vertices = scratch.vertexList;
+    std::vector<int>& faces = scratch.faceList;
+    StampedMarks &reachedVertices = scratch.vertices, &region = scratch.faces;
+    vertices.assign(1, v);
+    faces.clear();
+    reachedVertices.clear(t.numVertices);
+    region.clear(t.numFaces());
+    reachedVertices.mark(v, 1);
     size_t reached = 0;  // vertices before this index have had their faces added
     for (int ring = 0; ring < rings; ++ring) {
-        const size_t end = vertices.size(), firstNew = region.faces.size();
+        const size_t end = vertices.size(), firstNew = faces.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(vertices[reached]))
-                if (seenFaces.insert(f).second) region.faces.push_back(f);
-        for (size_t i = firstNew; i < region.faces.size(); ++i)
-            for (int u : t.verticesOfFace(region.faces[i]))
-                if (seenVertices.insert(u).second) {
-                    vertices.push_back(u);
-                    if (ring < inner) region.inner.insert(u);
-                }
+                if (region.mark(f)) faces.push_back(f);
+        for (size_t i = firstNew; i < faces.size(); ++i)
+            for (int u : t.verticesOfFace(faces[i]))
+                if (reachedVertices.mark(u, ring < inner ? 1 : 0)) vertices.push_back(u);
     }
-    std::sort(region.faces.begin(), region.faces.end());
-    return region;
 }
 
 }  // namespace
@@ -155,38 +147,56 @@ Region ringFaces(const Topology& t, int v, int rings, int inner) {
 // (the start face at v, a neighbour at the end of the edge it was reached across), and its
 // corners and edges are read counter-clockwise from there, so the labels depend on the faces
 // only. The signature numbers every vertex met; `vertices` keeps those of the first `rings`.
-Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int rings) {
-    const Region region = ringFaces(t, v, rings + 1, rings);
-    auto inRegion = [&](int f) { return std::binary_search(region.faces.begin(), region.faces.end(), f); };
-    Neighbourhood n;
-    std::unordered_map<int, int> labels;
+bool gatherNeighbourhood(const Topology& t, int v, int startFace, int rings, WalkScratch& scratch,
+                         Neighbourhood& n, const std::vector<int>* expected) {
+    markRegion(t, v, rings + 1, rings, scratch);
+    n.vertices.clear();
+    n.signature.clear();
+    bool differs = false;  // from `expected`, somewhere in the signature so far
+    auto see = [&](int x) {
+        const size_t at = n.signature.size();
+        n.signature.push_back(x);
+        if (expected && (at >= expected->size() || (*expected)[at] != x)) differs = true;
+    };
+    scratch.labels.clear(t.numVertices);
+    int labelled = 0;
     auto label = [&](int u) {
-        const auto [it, added] = labels.emplace(u, int(labels.size()));
-        if (added) {
-            if (region.inner.count(u)) n.vertices.push_back(u);
-            n.signature.push_back(sharpnessClass(t.vertSharpness[u]));
+        if (scratch.labels.mark(u, labelled)) {
+            ++labelled;
+            if (scratch.vertices.marked(u) && scratch.vertices.value(u) == 1) n.vertices.push_back(u);
+            see(sharpnessClass(t.vertSharpness[u]));
         }
-        return it->second;
+        return scratch.labels.value(u);
     };
     label(v);
-    std::unordered_set<int> visited{startFace};
-    std::deque<std::pair<int, int>> queue{{startFace, t.cornerOfVertex(startFace, v)}};
-    while (!queue.empty()) {
-        const auto [f, entry] = queue.front();
-        queue.pop_front();
+    StampedMarks& region = scratch.faces;
+    region.setValue(startFace, 1);
+    std::vector<std::pair<int, int>>& queue = scratch.queue;  // first in, first out from `head`
+    queue.assign(1, {startFace, t.cornerOfVertex(startFace, v)});
+    for (size_t head = 0; head < queue.size(); ++head) {
+        const auto [f, entry] = queue[head];
         const IndexSpan corners = t.verticesOfFace(f);
         const int size = corners.size();
-        n.signature.push_back(-size);
-        for (int i = 0; i < size; ++i) n.signature.push_back(label(corners[(entry + i) % size]));
+        see(-size);
+        for (int i = 0; i < size; ++i) see(label(corners[(entry + i) % size]));
         for (int i = 0; i < size; ++i) {
             const int e = t.edgeOfCorner(f, entry + i);
-            n.signature.push_back(sharpnessClass(t.edgeSharpness[e]) * 4 + std::min(t.edgeFaceCount(e), 3));
+            see(sharpnessClass(t.edgeSharpness[e]) * 4 + std::min(t.edgeFaceCount(e), 3));
             for (int g : t.facesOfEdge(e)) {
-                if (g == f || !inRegion(g) || !visited.insert(g).second) continue;
+                if (g == f || !region.marked(g) || region.value(g) == 1) continue;
+                region.setValue(g, 1);
                 queue.push_back({g, t.cornerOfVertex(g, corners[(entry + i + 1) % size])});
             }
         }
+        if (differs) return false;
     }
+    return true;
+}
+
+Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int rings) {
+    WalkScratch scratch;
+    Neighbourhood n;
+    gatherNeighbourhood(t, v, startFace, rings, scratch, n);
     return n;
 }
 

@@ -8,6 +8,7 @@
 
 #include <quadtri/far/options.h>
 #include <quadtri/far/topology.h>
+#include "far/internal/limit_scratch.h"
 #include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
@@ -20,8 +21,8 @@ struct PatchCut {
     std::vector<int> sizes, corners, creasePairs, holes, cornerVerts;
     std::vector<float> creaseWeights, cornerWeights;
 
-    // Every array but `source`, with the options that change the refinement.
-    std::vector<int> key(const Options& options) const;
+    // Every array but `source`, with the options that change the refinement, into `out`.
+    void key(const Options& options, std::vector<int>& out) const;
 };
 
 // A patch refined one level.
@@ -36,9 +37,10 @@ struct PatchStep {
 // reach two rings of the parent at most (Schaefer-Warren's copies, Butterfly's wings).
 constexpr int kPatchRings = 6;
 
-PatchCut cutPatch(const Topology& level, int vertex);
+// Into `cut` (its arrays reused), in `scratch`'s working space.
+void cutPatch(const Topology& level, int vertex, WalkScratch& scratch, PatchCut& cut);
 PatchStep refineCut(const PatchCut& cut, const Options& options);
-PatchStep refinePatch(const Topology& level, int vertex, const Options& options);
+PatchStep refinePatch(const Topology& level, int vertex, const Options& options, WalkScratch& scratch);
 
 }  // namespace v0
 }  // namespace quadtri

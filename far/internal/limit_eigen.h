@@ -6,11 +6,15 @@
 
 #include <array>
 #include <cstddef>
-#include <map>
+#include <cstdint>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "far/internal/limit_deeper.h"
 #include "far/internal/limit_mask.h"
+#include "far/internal/limit_scratch.h"
+#include "far/internal/local_matrix.h"
 #include <quadtri/far/options.h>
 #include <quadtri/far/topology.h>
 
@@ -48,9 +52,20 @@ struct FollowedDown {
     bool settled = false;
 };
 
+// What eigenLimit reuses from one vertex to the next (far/internal/limit_scratch.h).
+struct LimitScratch {
+    WalkScratch walk;       // the neighbourhood's and the patch's marks
+    Neighbourhood ring;     // the vertex's neighbourhood, as laidOver reads it
+    PatchCut cut;           // the vertex's patch
+    std::vector<int> key;   // cut's key
+    std::vector<int> configurationKey;  // cachedLimit's
+    std::vector<std::pair<int, std::array<double, 3>>> entries;  // the vertex's masks, before they are sorted
+};
+
 // Masks per configuration (the key encodes what decides the mask: the cyclic face sizes around
 // the vertex, its rule and sharp edges, the scheme's state near it; the generic path defines it).
-// Not shared between threads: each builder of a limit table holds its own.
+// Not shared between threads: each builder of a limit table holds its own, with the working
+// space of its vertices.
 class LimitMaskCache {
 public:
     const LocalLimitMask* find(const std::vector<int>& key) const {
@@ -72,10 +87,31 @@ public:
         if (followed_.size() < kMaxFollowed) followed_.emplace(std::move(patchKey), std::move(f));
     }
 
+    LimitScratch& scratch() { return scratch_; }
+
 private:
+    // Every int of the key mixed in (keys differ anywhere, often only far along), in four
+    // independent lanes: a patch's key is a thousand ints or so.
+    struct KeyHash {
+        std::size_t operator()(const std::vector<int>& key) const {
+            std::uint64_t lane[4] = {key.size(), 1, 2, 3};
+            const std::size_t n = key.size();
+            std::size_t i = 0;
+            for (; i + 4 <= n; i += 4)
+                for (int j = 0; j < 4; ++j) lane[j] = mix(lane[j] + std::uint32_t(key[i + j]));
+            for (; i < n; ++i) lane[0] = mix(lane[0] + std::uint32_t(key[i]));
+            return std::size_t(mix(lane[0] ^ mix(lane[1] ^ mix(lane[2] ^ mix(lane[3])))));
+        }
+        static std::uint64_t mix(std::uint64_t h) {
+            h *= 0x9E3779B97F4A7C15ull;
+            return h ^ (h >> 32);
+        }
+    };
     static constexpr std::size_t kMaxFollowed = 4096;
-    std::map<std::vector<int>, LocalLimitMask> masks_;
-    std::map<std::vector<int>, FollowedDown> followed_;
+    // Node-based: a mask's address stays put as others are added (FollowedDown::analysis).
+    std::unordered_map<std::vector<int>, LocalLimitMask, KeyHash> masks_;
+    std::unordered_map<std::vector<int>, FollowedDown, KeyHash> followed_;
+    LimitScratch scratch_;
 };
 
 // Appends to `out` (cleared by the caller) the limit masks of `vertex` under `rules`, over the

@@ -11,6 +11,7 @@
 
 #include <quadtri/far/options.h>
 #include <quadtri/far/topology.h>
+#include "far/internal/limit_scratch.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -57,6 +58,11 @@ struct Neighbourhood {
     std::vector<int> signature;
 };
 Neighbourhood gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings);
+// The same into `out` (its arrays reused), in `scratch`'s working space: for the limit build's
+// vertex after vertex. With `expected`, the walk stops at the first face where the signature
+// departs from it, and returns false: the neighbourhood is not that one (`out` is then partial).
+bool gatherNeighbourhood(const Topology& topology, int vertex, int startFace, int rings, WalkScratch& scratch,
+                         Neighbourhood& out, const std::vector<int>* expected = nullptr);
 
 // The local subdivision matrix S over the smallest ring neighbourhood N its masks keep closed:
 // row i is the child (one level down) of N's element i, in ring-relative order, over N.
