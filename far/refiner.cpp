@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "far/internal/fvar_channel.h"
 #include "far/internal/level_estimate.h"
 #include "far/internal/limit_ring.h"
 #include "far/internal/limit_table.h"
@@ -22,7 +23,13 @@ inline namespace v0 {
 Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
     levels_.push_back(buildBaseTopology(desc, options, &warnings_));
     detail_.push_back(TopologyDetail::Full);
+    for (int c = 0; c < desc.numFVarChannels; ++c)
+        fvar_.push_back(std::make_unique<FVarChannelRefinement>(desc, c, levels_[0], options_));
 }
+
+Refiner::~Refiner() = default;
+Refiner::Refiner(Refiner&&) noexcept = default;
+Refiner& Refiner::operator=(Refiner&&) noexcept = default;
 
 const Topology& Refiner::level(int L) const {
     const Topology& topology = levels_.at(L);
@@ -41,6 +48,7 @@ std::size_t Refiner::bytes() const {
     std::size_t total = 0;
     for (const Topology& t : levels_) total += bytesOf(t);
     for (const StencilTable& t : levelTables_) total += t.bytes();
+    for (const auto& c : fvar_) total += c->bytes();
     return total;
 }
 
@@ -66,7 +74,9 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
     while (this->maxLevel() < maxLevel) {
         const int L = this->maxLevel() + 1;
         completeLevel(L - 1);  // within the budget level L - 1 was built under
-        const std::size_t estimate = estimateLevelBytes(L), held = bytes();
+        std::size_t estimate = estimateLevelBytes(L);
+        for (const auto& c : fvar_) estimate += c->estimateNextLevelBytes(rulesOf(options_.scheme));
+        const std::size_t held = bytes();
         if (held > options_.memoryBudgetBytes || estimate > options_.memoryBudgetBytes - held)
             throw MemoryBudgetError("level " + std::to_string(L), held + estimate, held, options_.memoryBudgetBytes);
         const Topology& parent = levels_.back();
@@ -80,6 +90,7 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
         levelTables_.push_back(std::move(table));
         levels_.push_back(std::move(child));
         detail_.push_back(detail);
+        for (const auto& c : fvar_) c->refine(levels_[L - 1], levels_[L], options_);
     }
     if (lastLevel == TopologyDetail::Full) completeLevel(maxLevel);
 }
@@ -107,12 +118,13 @@ private:
     std::size_t held_, budget_, used_ = 0;  // used: bytes of the double tables alive at this point
 };
 
-// The per-level tables of levels 1..L composed in double, over the control vertices.
-StencilTableD composeLevels(const Refiner& refiner, int L, CompositionBudget& budget) {
-    budget.reserve(doubleBytes(refiner.levelStencils(1)));
-    StencilTableD composed = toDoubleTable(refiner.levelStencils(1));
+// The per-level tables of levels 1..L (tableOf(l)) composed in double, over level 0.
+template <typename TableOf>
+StencilTableD composeTables(const TableOf& tableOf, int L, CompositionBudget& budget) {
+    budget.reserve(doubleBytes(tableOf(1)));
+    StencilTableD composed = toDoubleTable(tableOf(1));
     for (int l = 2; l <= L; ++l) {
-        const StencilTable& table = refiner.levelStencils(l);
+        const StencilTable& table = tableOf(l);
         budget.reserve(doubleBytes(table));
         const StencilTableD outer = toDoubleTable(table);
         try {
@@ -125,6 +137,19 @@ StencilTableD composeLevels(const Refiner& refiner, int L, CompositionBudget& bu
         }
     }
     return composed;
+}
+
+StencilTableD composeLevels(const Refiner& refiner, int L, CompositionBudget& budget) {
+    return composeTables([&](int l) -> const StencilTable& { return refiner.levelStencils(l); }, L, budget);
+}
+
+// The float table of a composition (an index per entry, two ints per stencil, a weight pool of
+// at most one float per entry) and a 3-float output per stencil, reserved while the double table
+// still lives.
+StencilTable roundComposed(const StencilTableD& composed, CompositionBudget& budget) {
+    const std::size_t n = composed.sizes.size(), entries = composed.indices.size();
+    budget.reserve(entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float)));
+    return toFloatTable(composed);
 }
 
 // Entries of the limit stencils of a level: at most the vertex, its edge neighbours and its
@@ -178,12 +203,49 @@ StencilTable Refiner::factorizedStencils(int L) const {
                             std::to_string(maxLevel()));
     CompositionBudget budget("the factorized stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
-    const StencilTableD composed = composeLevels(*this, L, budget);
-    // The float table (an index per entry, two ints per stencil, a weight pool of at most one
-    // float per entry) and a 3-float output per stencil, while the double table still lives.
-    const std::size_t n = composed.sizes.size(), entries = composed.indices.size();
-    budget.reserve(entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float)));
-    return toFloatTable(composed);
+    return roundComposed(composeLevels(*this, L, budget), budget);
+}
+
+const FVarChannelRefinement& Refiner::channel(int c) const {
+    if (c < 0 || c >= numFVarChannels())
+        throw TopologyError("face-varying channel " + std::to_string(c) + " asked for; the mesh has " +
+                            std::to_string(numFVarChannels()));
+    return *fvar_[std::size_t(c)];
+}
+
+int Refiner::numFVarValues(int c, int L) const {
+    if (L < 0 || L > maxLevel())
+        throw TopologyError("face-varying values asked for level " + std::to_string(L) + "; refined levels are 0.." +
+                            std::to_string(maxLevel()));
+    return channel(c).numValues(L);
+}
+
+IndexSpan Refiner::fvarValuesOfFace(int c, int L, int face) const {
+    const FVarChannelRefinement& ch = channel(c);
+    if (L < 0 || L > maxLevel() || face < 0 || face >= levels_[std::size_t(L)].numFaces())
+        throw TopologyError("face-varying values asked for face " + std::to_string(face) + " of level " +
+                            std::to_string(L));
+    return ch.valuesOfFace(L, face);
+}
+
+const StencilTable& Refiner::fvarLevelStencils(int c, int L) const {
+    const FVarChannelRefinement& ch = channel(c);
+    if (L < 1 || L > maxLevel())
+        throw TopologyError("face-varying stencils asked for level " + std::to_string(L) + "; refined levels are 1.." +
+                            std::to_string(maxLevel()));
+    return ch.levelStencils(L);
+}
+
+StencilTable Refiner::fvarFactorizedStencils(int c, int L) const {
+    const FVarChannelRefinement& ch = channel(c);
+    if (L < 1 || L > maxLevel())
+        throw TopologyError("factorized face-varying stencils asked for level " + std::to_string(L) +
+                            "; refined levels are 1.." + std::to_string(maxLevel()));
+    CompositionBudget budget("the factorized stencils of face-varying channel " + std::to_string(c) + " at level " +
+                                 std::to_string(L),
+                             bytes(), options_.memoryBudgetBytes);
+    return roundComposed(
+        composeTables([&](int l) -> const StencilTable& { return ch.levelStencils(l); }, L, budget), budget);
 }
 
 void Refiner::checkLimitLevel(int L) const {

@@ -1,0 +1,185 @@
+// Face-varying refinement against OpenSubdiv: every shape of tests/meshes/osd with UVs (`vt`),
+// catmark_* under catmull-clark, loop_* under loop, bilinear_* under bilinear, under each of the
+// six FVarLinearInterpolation options, levels 1-3: the refined UVs equal
+// Far::PrimvarRefiner::InterpolateFaceVarying's, corner by corner. The two libraries number
+// refined vertices, faces and values differently, so faces are matched by the positions of their
+// corners (vertices matched by position first), then corners within the face by their vertex.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "tests/osd_reference.h"
+#include "tests/test_support.h"
+
+namespace quadtri::test {
+namespace {
+
+constexpr int kMaxLevel = 3;
+// Relative to the UV range: the larger of the control UVs' extent and magnitude (both libraries
+// refine in float, and float UVs of magnitude m round by m * 2^-24 at every step).
+constexpr double kUVTolerance = 1e-6;
+constexpr double kPositionTolerance = 1e-5;  // relative to the control mesh's diagonal
+
+struct FVarCase {
+    std::string shape;
+    OsdScheme reference = OsdScheme::Catmark;
+    Scheme ours = Scheme::CatmullClark;
+    FVarLinearInterpolation fvar = FVarLinearInterpolation::CornersPlus1;
+};
+
+std::ostream& operator<<(std::ostream& os, const FVarCase& c) {
+    return os << c.shape << " (" << toString(c.ours) << ", " << toString(c.fvar) << ")";
+}
+
+bool hasUVCorners(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    bool vt = false, corner = false;
+    for (std::string line; std::getline(in, line);) {
+        vt = vt || line.rfind("vt ", 0) == 0;
+        if (line.rfind("f ", 0) == 0) corner = corner || line.find('/') != std::string::npos;
+    }
+    return vt && corner;
+}
+
+std::vector<FVarCase> fvarCases() {
+    std::vector<std::string> shapes;
+    for (const auto& entry : std::filesystem::directory_iterator(meshPath("osd")))
+        if (entry.path().extension() == ".obj" && hasUVCorners(entry.path())) shapes.push_back(entry.path().stem().string());
+    std::sort(shapes.begin(), shapes.end());
+    std::vector<FVarCase> cases;
+    for (const std::string& shape : shapes) {
+        FVarCase c;
+        c.shape = shape;
+        if (shape.rfind("catmark_", 0) == 0) {
+            c.reference = OsdScheme::Catmark;
+            c.ours = Scheme::CatmullClark;
+        } else if (shape.rfind("loop_", 0) == 0) {
+            c.reference = OsdScheme::Loop;
+            c.ours = Scheme::Loop;
+        } else if (shape.rfind("bilinear_", 0) == 0) {
+            c.reference = OsdScheme::Bilinear;
+            c.ours = Scheme::Bilinear;
+        } else {
+            continue;
+        }
+        for (FVarLinearInterpolation fvar : allFVarLinearInterpolations()) {
+            c.fvar = fvar;
+            cases.push_back(c);
+        }
+    }
+    return cases;
+}
+
+std::string caseName(const testing::TestParamInfo<FVarCase>& info) {
+    return testNameOf(info.param.shape + "_" + toString(info.param.ours) + "_" + toString(info.param.fvar));
+}
+
+// `width`-float data of level L from level L - 1's through one table.
+std::vector<float> apply(const StencilTable& table, const std::vector<float>& src, int width) {
+    std::vector<float> dst(std::size_t(table.numStencils()) * width, 0.0f);
+    for (int i = 0; i < table.numStencils(); ++i) {
+        const float* w = table.weightsOf(i);
+        for (int k = 0; k < table.size(i); ++k)
+            for (int c = 0; c < width; ++c)
+                dst[std::size_t(i) * width + c] += w[k] * src[std::size_t(table.indices[table.offsets[i] + k]) * width + c];
+    }
+    return dst;
+}
+
+double rangeOf(const std::vector<float>& uvs) {
+    double range = 0;
+    for (int c = 0; c < 2; ++c) {
+        double lo = 1e300, hi = -1e300;
+        for (std::size_t i = c; i < uvs.size(); i += 2) {
+            lo = std::min(lo, double(uvs[i]));
+            hi = std::max(hi, double(uvs[i]));
+        }
+        range = std::max({range, hi - lo, std::fabs(lo), std::fabs(hi)});
+    }
+    return range > 0 ? range : 1.0;
+}
+
+class FVarAgreement : public testing::TestWithParam<FVarCase> {};
+
+TEST_P(FVarAgreement, RefinedUVsEqualOpenSubdivCornerByCorner) {
+    const FVarCase& c = GetParam();
+    const io::ObjMesh mesh = io::readObj(meshPath("osd/" + c.shape + ".obj"));
+    ASSERT_TRUE(mesh.hasUVs());
+    Options options;
+    options.scheme = c.ours;
+    options.fvarLinearInterpolation = c.fvar;
+    options = mesh.applyTags(options);
+    FVarChannel uvChannel;
+    Refiner refiner(mesh.descriptor(uvChannel), options);
+    ASSERT_EQ(refiner.numFVarChannels(), 1);
+    refiner.refineUniform(kMaxLevel);
+    const OsdFaceVarying osd =
+        osdFaceVarying(mesh, c.reference, options.boundary, options.creaseMethod, c.fvar, kMaxLevel);
+
+    const double diagonal = boundingBoxDiagonal(mesh.positions);
+    const double extent = rangeOf(mesh.uvs);
+    std::vector<float> positions = mesh.positions, uvs = mesh.uvs;
+    double worst = 0;
+    for (int L = 1; L <= kMaxLevel; ++L) {
+        SCOPED_TRACE("level " + std::to_string(L));
+        positions = apply(refiner.levelStencils(L), positions, 3);
+        uvs = apply(refiner.fvarLevelStencils(0, L), uvs, 2);
+        ASSERT_EQ(int(uvs.size() / 2), refiner.numFVarValues(0, L));
+        const LevelFaces faces = refiner.faces(L);
+        ASSERT_EQ(faces.numFaces(), int(osd.faceOffsets[L].size()) - 1);
+        const PositionMatch match = matchPositions(positions, osd.positions[L], diagonal, kPositionTolerance);
+        ASSERT_TRUE(match.countsEqual && match.outliers.empty() && match.numCollisions == 0)
+            << "refined vertices do not match OpenSubdiv's: worst " << match.maxRelative();
+        // OpenSubdiv's faces by their (sorted) vertices.
+        std::map<std::vector<int>, int> osdFaceOf;
+        for (int g = 0; g + 1 < int(osd.faceOffsets[L].size()); ++g) {
+            std::vector<int> key(osd.faceVerts[L].begin() + osd.faceOffsets[L][g],
+                                 osd.faceVerts[L].begin() + osd.faceOffsets[L][g + 1]);
+            std::sort(key.begin(), key.end());
+            osdFaceOf[key] = g;
+        }
+        int failures = 0;
+        for (int f = 0; f < faces.numFaces(); ++f) {
+            const IndexSpan corners = faces.verticesOfFace(f);
+            const IndexSpan values = refiner.fvarValuesOfFace(0, L, f);
+            ASSERT_EQ(values.size(), corners.size());
+            std::vector<int> key;
+            for (int v : corners) key.push_back(match.ourToReference[std::size_t(v)]);
+            std::vector<int> sorted = key;
+            std::sort(sorted.begin(), sorted.end());
+            const auto found = osdFaceOf.find(sorted);
+            ASSERT_NE(found, osdFaceOf.end()) << "face " << f << " has no OpenSubdiv face with its corners";
+            const int g = found->second, b = osd.faceOffsets[L][g];
+            for (int k = 0; k < corners.size(); ++k) {
+                int j = 0;
+                while (osd.faceVerts[L][std::size_t(b + j)] != key[std::size_t(k)]) ++j;
+                const int ours = values[k], theirs = osd.faceValues[L][std::size_t(b + j)];
+                for (int axis = 0; axis < 2; ++axis) {
+                    const double error = std::fabs(double(uvs[2 * std::size_t(ours) + axis]) -
+                                                   double(osd.uvs[L][2 * std::size_t(theirs) + axis])) /
+                                         extent;
+                    worst = std::max(worst, error);
+                    if (error > kUVTolerance && failures++ < 5)
+                        ADD_FAILURE() << "face " << f << " corner " << k << " (vertex " << corners[k] << ", value "
+                                      << ours << "): " << uvs[2 * std::size_t(ours) + axis] << " against OpenSubdiv's "
+                                      << osd.uvs[L][2 * std::size_t(theirs) + axis] << " (axis " << axis << ")";
+                }
+            }
+        }
+        EXPECT_EQ(failures, 0) << failures << " corner values differ from OpenSubdiv's";
+    }
+    RecordProperty("worst_relative_uv_error", std::to_string(worst));
+    std::printf("fvar-osd %s %s %s worst %.3g\n", c.shape.c_str(), toString(c.ours), toString(c.fvar), worst);
+}
+
+INSTANTIATE_TEST_SUITE_P(OsdShapes, FVarAgreement, testing::ValuesIn(fvarCases()), caseName);
+
+}  // namespace
+}  // namespace quadtri::test
