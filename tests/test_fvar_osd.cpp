@@ -1,6 +1,7 @@
 // Face-varying refinement against OpenSubdiv: every shape of tests/meshes/osd with UVs (`vt`),
-// catmark_* under catmull-clark, loop_* under loop, bilinear_* under bilinear, under each of the
-// six FVarLinearInterpolation options, levels 1-3: the refined UVs equal
+// catmark_* under catmull-clark, loop_* under loop, bilinear_* under bilinear, and the pure ones
+// under the mixed schemes too (as test_osd_agreement), under each of the six
+// FVarLinearInterpolation options, levels 1-3: the refined UVs equal
 // Far::PrimvarRefiner::InterpolateFaceVarying's, corner by corner. The two libraries number
 // refined vertices, faces and values differently, so faces are matched by the positions of their
 // corners (vertices matched by position first), then corners within the face by their vertex.
@@ -48,6 +49,23 @@ bool hasUVCorners(const std::filesystem::path& path) {
     return vt && corner;
 }
 
+// The shape's own scheme, then the mixed schemes where test_osd_agreement has them equal
+// OpenSubdiv: shapes without a triangle (catmark) or a collapsed edge (both).
+std::vector<Scheme> schemesOf(const std::string& shape, Scheme own) {
+    const io::ObjMesh mesh = io::readObj(meshPath("osd/" + shape + ".obj"));
+    bool triangles = false, collapsed = false;
+    for (int f = 0, corner = 0; f < mesh.numFaces(); corner += mesh.faceSizes[f++]) {
+        triangles = triangles || mesh.faceSizes[f] == 3;
+        for (int i = 0; i < mesh.faceSizes[f]; ++i)
+            collapsed = collapsed || mesh.faceVerts[corner + i] == mesh.faceVerts[corner + (i + 1) % mesh.faceSizes[f]];
+    }
+    std::vector<Scheme> schemes{own};
+    if (own == Scheme::CatmullClark && !triangles && !collapsed)
+        schemes.insert(schemes.end(), {Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly});
+    if (own == Scheme::Loop && !collapsed) schemes.insert(schemes.end(), {Scheme::StamLoop, Scheme::SchaeferWarren});
+    return schemes;
+}
+
 std::vector<FVarCase> fvarCases() {
     std::vector<std::string> shapes;
     for (const auto& entry : std::filesystem::directory_iterator(meshPath("osd")))
@@ -69,9 +87,12 @@ std::vector<FVarCase> fvarCases() {
         } else {
             continue;
         }
-        for (FVarLinearInterpolation fvar : allFVarLinearInterpolations()) {
-            c.fvar = fvar;
-            cases.push_back(c);
+        for (Scheme scheme : schemesOf(shape, c.ours)) {
+            c.ours = scheme;
+            for (FVarLinearInterpolation fvar : allFVarLinearInterpolations()) {
+                c.fvar = fvar;
+                cases.push_back(c);
+            }
         }
     }
     return cases;
