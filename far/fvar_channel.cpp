@@ -417,6 +417,11 @@ IndexSpan FVarChannelRefinement::valuesOfFace(int L, int f) const {
     return levels_.at(std::size_t(L)).values.verticesOfFace(f);
 }
 
+IndexSpan FVarChannelRefinement::valuesOfLevel(int L) const {
+    const std::vector<int>& corners = L == 0 ? controlValues_ : levels_.at(std::size_t(L)).values.faceVerts;
+    return {corners.data(), corners.data() + corners.size()};
+}
+
 std::size_t FVarChannelRefinement::bytes() const {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     std::size_t total = bytes(controlValues_) + bytes(controlValueOf_);

@@ -228,6 +228,14 @@ IndexSpan Refiner::fvarValuesOfFace(int c, int L, int face) const {
     return ch.valuesOfFace(L, face);
 }
 
+IndexSpan Refiner::fvarValues(int c, int L) const {
+    const FVarChannelRefinement& ch = channel(c);
+    if (L < 0 || L > maxLevel())
+        throw TopologyError("face-varying values asked for level " + std::to_string(L) + "; refined levels are 0.." +
+                            std::to_string(maxLevel()));
+    return ch.valuesOfLevel(L);
+}
+
 const StencilTable& Refiner::fvarLevelStencils(int c, int L) const {
     const FVarChannelRefinement& ch = channel(c);
     if (L < 1 || L > maxLevel())

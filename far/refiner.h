@@ -85,6 +85,8 @@ public:
     int numFVarChannels() const { return int(fvar_.size()); }
     int numFVarValues(int channel, int L) const;
     IndexSpan fvarValuesOfFace(int channel, int L, int face) const;
+    // Every corner's value at level L, in faces(L).vertices() order (an index buffer).
+    IndexSpan fvarValues(int channel, int L) const;
     // Level L's values (L >= 1) over level L - 1's; level 1's over the channel's own values.
     // Evaluate them like levelStencils, with the channel's width (2 floats for UVs).
     const StencilTable& fvarLevelStencils(int channel, int L) const;

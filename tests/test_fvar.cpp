@@ -137,8 +137,14 @@ TEST(FVar, TablesArePartitionsOfUnityAndFactorizeExactly) {
                     for (std::size_t i = 0; i < direct.size(); ++i)
                         worst = std::max(worst, std::fabs(double(direct[i]) - double(uvs[L][i])));
                     EXPECT_LE(worst, 1e-5);
-                    for (int f = 0; f < refiner.faces(L).numFaces(); ++f)
-                        for (int value : refiner.fvarValuesOfFace(0, L, f)) ASSERT_TRUE(value >= 0 && value < table.numStencils());
+                    const LevelFaces faces = refiner.faces(L);
+                    const IndexSpan all = refiner.fvarValues(0, L);
+                    ASSERT_EQ(all.size(), faces.numCorners());
+                    for (int f = 0; f < faces.numFaces(); ++f) {
+                        const IndexSpan values = refiner.fvarValuesOfFace(0, L, f);
+                        ASSERT_EQ(values.begin(), all.begin() + faces.offsets()[f]);
+                        for (int value : values) ASSERT_TRUE(value >= 0 && value < table.numStencils());
+                    }
                 }
             }
     }

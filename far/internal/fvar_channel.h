@@ -45,6 +45,8 @@ public:
     int numValues(int L) const { return L == 0 ? numControlValues_ : levels_.at(L).values.numVertices; }
     // Face f's value per corner at level L (the channel's value indices at L = 0).
     IndexSpan valuesOfFace(int L, int f) const;
+    // Every corner's value at level L, in faces(L)'s corner order.
+    IndexSpan valuesOfLevel(int L) const;
     // Level L's values over level L - 1's (L >= 1; level 1 over the channel's own values).
     const StencilTable& levelStencils(int L) const { return tables_.at(L - 1); }
     std::size_t bytes() const;
