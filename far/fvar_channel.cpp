@@ -344,6 +344,29 @@ std::vector<FVarKind> FVarChannelRefinement::childKinds(const Level& parent, con
     return kinds;
 }
 
+// Per value-vertex edge (parallel to vertEdges): the sharpness its child takes at that end, the
+// mesh's own (Chaikin reads the mesh vertex's edges), infinite on the value mesh's boundaries.
+std::vector<float> FVarChannelRefinement::meshChildEdgeSharpness(const Level& parent, const Topology& meshParent,
+                                                                 const Options& options) const {
+    const Topology& values = parent.values;
+    std::vector<float> out(values.vertEdges.size());
+    std::vector<float> meshChild;
+    for (int p = 0; p < values.numVertices; ++p) {
+        const int v = parent.meshVertex[std::size_t(p)];
+        meshChild.resize(std::size_t(meshParent.vertexEdgeCount(v)));
+        childEdgeSharpnessAtVertex(meshParent, v, options.creaseMethod, meshChild.data());
+        const IndexSpan edges = values.edgesOfVertex(p);
+        for (int i = 0; i < edges.size(); ++i) {
+            const int e = edges[i];
+            const bool seam = values.edgeFlags[std::size_t(e)] & (kEdgeBoundary | kEdgeNonManifold);
+            out[std::size_t(values.vertEdgeOffsets[p] + i)] =
+                seam ? decrementSharpness(values.edgeSharpness[std::size_t(e)])
+                     : meshChild[std::size_t(edgeIndexAt(meshParent, v, parent.meshEdge[std::size_t(e)]))];
+        }
+    }
+    return out;
+}
+
 void FVarChannelRefinement::refine(const Topology& meshParent, const Topology& meshChild, const Options& options) {
     Level& parent = levels_.back();
     Topology& values = parent.values;
@@ -380,13 +403,26 @@ void FVarChannelRefinement::refine(const Topology& meshParent, const Topology& m
             values.vertSharpness[std::size_t(p)] = s;
         }
     }
+    // Chaikin decay reads every semi-sharp edge at a vertex: the value mesh's edges decay as the
+    // mesh's do, not as a value-vertex's own span alone would.
+    std::vector<float> childSharpness;
+    if (options.creaseMethod == CreaseMethod::Chaikin) childSharpness = meshChildEdgeSharpness(parent, meshParent, options);
+    const std::vector<float>* override = childSharpness.empty() ? nullptr : &childSharpness;
     if (tables_.empty()) {
-        tables_.push_back(toFloatTable(
-            overControlValues(buildLevelStencils<StencilTableD>(values, num, options), controlValueOf_, numControlValues_)));
+        tables_.push_back(toFloatTable(overControlValues(buildLevelStencils<StencilTableD>(values, num, options, override),
+                                                         controlValueOf_, numControlValues_)));
     } else {
-        tables_.push_back(buildLevelStencils<StencilTable>(values, num, options));
+        tables_.push_back(buildLevelStencils<StencilTable>(values, num, options, override));
     }
     child.values = refineTopology(values, num, options.creaseMethod, TopologyDetail::Full);
+    for (int p = 0; p < values.numVertices && override; ++p) {
+        const IndexSpan edges = values.edgesOfVertex(p);
+        for (int i = 0; i < edges.size(); ++i) {
+            const int e = edges[i];
+            child.values.edgeSharpness[2 * std::size_t(e) + (values.edgeVerts[2 * std::size_t(e)] == p ? 0 : 1)] =
+                childSharpness[std::size_t(values.vertEdgeOffsets[p] + i)];
+        }
+    }
     const Topology& cv = child.values;
     child.meshVertex.resize(std::size_t(cv.numVertices));
     for (int k = 0; k < cv.numFaceVertices(); ++k)

@@ -1,7 +1,8 @@
 // Face-varying refinement against OpenSubdiv: every shape of tests/meshes/osd with UVs (`vt`),
 // catmark_* under catmull-clark, loop_* under loop, bilinear_* under bilinear, and the pure ones
 // under the mixed schemes too (as test_osd_agreement), under each of the six
-// FVarLinearInterpolation options, levels 1-3: the refined UVs equal
+// FVarLinearInterpolation options, levels 1-3; the creased shapes also with synthetic UVs whose
+// seams run through their creases, the chaikin shapes also under Chaikin decay: the refined UVs equal
 // Far::PrimvarRefiner::InterpolateFaceVarying's, corner by corner. The two libraries number
 // refined vertices, faces and values differently, so faces are matched by the positions of their
 // corners (vertices matched by position first), then corners within the face by their vertex.
@@ -30,13 +31,17 @@ constexpr double kPositionTolerance = 1e-5;  // relative to the control mesh's d
 
 struct FVarCase {
     std::string shape;
+    // The shape's own UVs, or replaced by a seam along every edge (perFaceUVs) or by two charts
+    // (splitUVs).
+    enum class UVs { Own, PerFace, Split } uvs = UVs::Own;
+    bool chaikin = false;  // Chaikin creases whatever the shape's tag says
     OsdScheme reference = OsdScheme::Catmark;
     Scheme ours = Scheme::CatmullClark;
     FVarLinearInterpolation fvar = FVarLinearInterpolation::CornersPlus1;
 };
 
 std::ostream& operator<<(std::ostream& os, const FVarCase& c) {
-    return os << c.shape << " (" << toString(c.ours) << ", " << toString(c.fvar) << ")";
+    return os << c.shape << (c.chaikin ? " chaikin" : "") << (c.uvs == FVarCase::UVs::PerFace ? " per-face UVs" : c.uvs == FVarCase::UVs::Split ? " split UVs" : "") << " (" << toString(c.ours) << ", " << toString(c.fvar) << ")";
 }
 
 bool hasUVCorners(const std::filesystem::path& path) {
@@ -47,6 +52,14 @@ bool hasUVCorners(const std::filesystem::path& path) {
         if (line.rfind("f ", 0) == 0) corner = corner || line.find('/') != std::string::npos;
     }
     return vt && corner;
+}
+
+// Whether the shape tags creases or corners.
+bool hasSharpness(const std::string& path) {
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("t crease", 0) == 0 || line.rfind("t corner", 0) == 0) return true;
+    return false;
 }
 
 // The shape's own scheme, then the mixed schemes where test_osd_agreement has them equal
@@ -87,11 +100,28 @@ std::vector<FVarCase> fvarCases() {
         } else {
             continue;
         }
-        for (Scheme scheme : schemesOf(shape, c.ours)) {
+        const Scheme own = c.ours;
+        for (Scheme scheme : schemesOf(shape, own)) {
             c.ours = scheme;
             for (FVarLinearInterpolation fvar : allFVarLinearInterpolations()) {
                 c.fvar = fvar;
                 cases.push_back(c);
+            }
+        }
+        if (hasSharpness(meshPath("osd/" + shape + ".obj"))) {
+            c.ours = own;
+            // The chaikin shapes' tags ask for uniform decay ("normal"): Chaikin's too.
+            for (bool chaikin : {false, true}) {
+                if (chaikin && shape.find("chaikin") == std::string::npos) continue;
+                c.chaikin = chaikin;
+                for (FVarCase::UVs uvs : {FVarCase::UVs::Own, FVarCase::UVs::PerFace, FVarCase::UVs::Split}) {
+                    if (uvs == FVarCase::UVs::Own && !chaikin) continue;
+                    c.uvs = uvs;
+                    for (FVarLinearInterpolation fvar : allFVarLinearInterpolations()) {
+                        c.fvar = fvar;
+                        cases.push_back(c);
+                    }
+                }
             }
         }
     }
@@ -99,7 +129,8 @@ std::vector<FVarCase> fvarCases() {
 }
 
 std::string caseName(const testing::TestParamInfo<FVarCase>& info) {
-    return testNameOf(info.param.shape + "_" + toString(info.param.ours) + "_" + toString(info.param.fvar));
+    return testNameOf(info.param.shape + (info.param.chaikin ? "_chaikin" : "") + (info.param.uvs == FVarCase::UVs::PerFace ? "_per_face" : info.param.uvs == FVarCase::UVs::Split ? "_split" : "") + "_" + toString(info.param.ours) + "_" +
+                      toString(info.param.fvar));
 }
 
 // `width`-float data of level L from level L - 1's through one table.
@@ -127,16 +158,58 @@ double rangeOf(const std::vector<float>& uvs) {
     return range > 0 ? range : 1.0;
 }
 
+// Every face its own values, each corner's UV a linear map of its vertex's position: every edge is a seam and every
+// vertex has as many values as faces (junctions, darts, corners and semi-sharp spans everywhere).
+void perFaceUVs(io::ObjMesh& mesh) {
+    mesh.uvs.clear();
+    mesh.faceUVs.clear();
+    for (int v : mesh.faceVerts) {
+        mesh.faceUVs.push_back(mesh.numUVs());
+        const float* p = &mesh.positions[3 * std::size_t(v)];
+        mesh.uvs.push_back(p[0] + 0.5f * p[1] + 0.01f * float(mesh.faceUVs.size() % 7));
+        mesh.uvs.push_back(p[2] - 0.3f * p[1]);
+    }
+}
+
+// Two charts, each corner's UV a linear map of its vertex's position (shifted in the second chart): faces whose
+// centroid has x below the middle of the bounding box, and the others. The seam between them runs
+// through the mesh, across its creases, so that seam vertices keep sharp edges on both sides.
+void splitUVs(io::ObjMesh& mesh) {
+    float lo = 1e30f, hi = -1e30f;
+    for (std::size_t i = 0; i < mesh.positions.size(); i += 3) {
+        lo = std::min(lo, mesh.positions[i]);
+        hi = std::max(hi, mesh.positions[i]);
+    }
+    const float middle = 0.5f * (lo + hi) + 0.01f * (hi - lo);
+    mesh.uvs.clear();
+    mesh.faceUVs.clear();
+    for (int v = 0; v < 2 * mesh.numVertices(); ++v) {
+        const int p = v % mesh.numVertices();
+        const float* x = &mesh.positions[3 * std::size_t(p)];
+        mesh.uvs.push_back(x[0] + 0.5f * x[1] + (v >= mesh.numVertices() ? 0.25f : 0.0f));
+        mesh.uvs.push_back(x[2] - 0.3f * x[1]);
+    }
+    for (int f = 0, b = 0; f < mesh.numFaces(); b += mesh.faceSizes[f++]) {
+        float x = 0;
+        for (int k = 0; k < mesh.faceSizes[f]; ++k) x += mesh.positions[3 * std::size_t(mesh.faceVerts[b + k])];
+        const int chart = x / float(mesh.faceSizes[f]) < middle ? 0 : mesh.numVertices();
+        for (int k = 0; k < mesh.faceSizes[f]; ++k) mesh.faceUVs.push_back(mesh.faceVerts[b + k] + chart);
+    }
+}
+
 class FVarAgreement : public testing::TestWithParam<FVarCase> {};
 
 TEST_P(FVarAgreement, RefinedUVsEqualOpenSubdivCornerByCorner) {
     const FVarCase& c = GetParam();
-    const io::ObjMesh mesh = io::readObj(meshPath("osd/" + c.shape + ".obj"));
+    io::ObjMesh mesh = io::readObj(meshPath("osd/" + c.shape + ".obj"));
+    if (c.uvs == FVarCase::UVs::PerFace) perFaceUVs(mesh);
+    if (c.uvs == FVarCase::UVs::Split) splitUVs(mesh);
     ASSERT_TRUE(mesh.hasUVs());
     Options options;
     options.scheme = c.ours;
     options.fvarLinearInterpolation = c.fvar;
     options = mesh.applyTags(options);
+    if (c.chaikin) options.creaseMethod = CreaseMethod::Chaikin;
     FVarChannel uvChannel;
     Refiner refiner(mesh.descriptor(uvChannel), options);
     ASSERT_EQ(refiner.numFVarChannels(), 1);

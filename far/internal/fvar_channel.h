@@ -68,6 +68,7 @@ private:
 
     void tagLevel0(const Topology& mesh, const Options& options);
     void sharpen(Level& level, const Options& options) const;
+    std::vector<float> meshChildEdgeSharpness(const Level& parent, const Topology& meshParent, const Options& options) const;
     std::vector<FVarKind> childKinds(const Level& parent, const Topology& meshParent, const ChildNumbering& num,
                                      const Options& options) const;
 
