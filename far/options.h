@@ -33,6 +33,18 @@ enum class CreaseMethod {
     Chaikin,  // 3:1 blend with the other semi-sharp edges at the vertex, then - 1
 };
 
+// Which face-varying values are interpolated linearly (kept as corners) rather than smoothly, as
+// OpenSubdiv's Sdc::Options::FVarLinearInterpolation; Blender's "UV Smooth" label in brackets
+// (docs/face_varying.md says what each one sharpens).
+enum class FVarLinearInterpolation {
+    None,          // smooth everywhere, seams as smooth boundaries ("All" in Blender: smooth all)
+    CornersOnly,   // values at a seam corner (one face) are sharp ("Keep Corners")
+    CornersPlus1,  // also junctions of 3+ values, and 2 values where one side is sharp ("Keep Corners, Junctions"); OpenSubdiv's default
+    CornersPlus2,  // also darts and both values where one is a corner ("Keep Corners, Junctions, Concave")
+    Boundaries,    // every value on a seam or the mesh boundary is linear ("Keep Boundaries")
+    All,           // linear everywhere, bilinear on the channel's faces ("None" in Blender: no smoothing)
+};
+
 struct Options {
     Scheme scheme = Scheme::SchaeferWarren;
     BoundaryInterpolation boundary = BoundaryInterpolation::EdgeOnly;
@@ -43,8 +55,18 @@ struct Options {
     // weigh the face points more. Catmull-Clark only; under any other scheme the Refiner refuses
     // it with a TopologyError.
     bool smoothTriangles = false;
+    // How face-varying channels (TopologyDescriptor::fvarChannels) treat their seams and corners.
+    FVarLinearInterpolation fvarLinearInterpolation = FVarLinearInterpolation::CornersPlus1;
     // A refinement whose estimated tables and output exceed this many bytes is refused.
     std::size_t memoryBudgetBytes = std::size_t(4) << 30;
+};
+
+// One face-varying channel (UVs, say): its own values, and one value index per face corner, in
+// the order of TopologyDescriptor::faceVertIndices. Where two faces that share a mesh vertex give it
+// different values, the channel has a seam there (docs/face_varying.md).
+struct FVarChannel {
+    int numValues = 0;
+    const int* valueIndices = nullptr;  // sum(numVertsPerFace) entries, each in [0, numValues)
 };
 
 // Sharpness at or above this value is infinitely sharp.
@@ -72,6 +94,12 @@ struct TopologyDescriptor {
 
     int numHoles = 0;
     const int* holeIndices = nullptr;  // face indices
+
+    // Face-varying channels, refined with the mesh (Refiner::fvarLevelStencils). A face of a
+    // channel must not repeat a vertex: the Refiner refuses it rather than guess which corner's
+    // value a split or merged corner keeps.
+    int numFVarChannels = 0;
+    const FVarChannel* fvarChannels = nullptr;  // numFVarChannels
 };
 
 // One problem found in the input: which item (a face, crease, corner or hole, by its index in the
@@ -131,6 +159,10 @@ std::optional<Scheme> schemeNamed(std::string_view name);
 // elsewhere.
 bool takesSmoothTriangles(Scheme scheme);
 const char* toString(BoundaryInterpolation boundary);
+// The face-varying options by name ("corners-plus1"), every one in order, and back from a name.
+const char* toString(FVarLinearInterpolation interpolation);
+const std::vector<FVarLinearInterpolation>& allFVarLinearInterpolations();
+std::optional<FVarLinearInterpolation> fvarLinearInterpolationNamed(std::string_view name);
 const char* toString(CreaseMethod method);
 
 }  // namespace v0

@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "far/internal/fvar_channel.h"
 #include "far/internal/level_estimate.h"
 #include "far/internal/limit_ring.h"
 #include "far/internal/limit_table.h"
@@ -23,7 +24,13 @@ inline namespace v0 {
 Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
     levels_.push_back(buildBaseTopology(desc, options, &warnings_));
     detail_.push_back(TopologyDetail::Full);
+    for (int c = 0; c < desc.numFVarChannels; ++c)
+        fvar_.push_back(std::make_unique<FVarChannelRefinement>(desc, c, levels_[0], options_));
 }
+
+Refiner::~Refiner() = default;
+Refiner::Refiner(Refiner&&) noexcept = default;
+Refiner& Refiner::operator=(Refiner&&) noexcept = default;
 
 const Topology& Refiner::level(int L) const {
     const Topology& topology = levels_.at(L);
@@ -42,6 +49,7 @@ std::size_t Refiner::bytes() const {
     std::size_t total = 0;
     for (const Topology& t : levels_) total += bytesOf(t);
     for (const StencilTable& t : levelTables_) total += t.bytes();
+    for (const auto& c : fvar_) total += c->bytes();
     return total;
 }
 
@@ -67,7 +75,9 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
     while (this->maxLevel() < maxLevel) {
         const int L = this->maxLevel() + 1;
         completeLevel(L - 1);  // within the budget level L - 1 was built under
-        const std::size_t estimate = estimateLevelBytes(L), held = bytes();
+        std::size_t estimate = estimateLevelBytes(L);
+        for (const auto& c : fvar_) estimate += c->estimateNextLevelBytes(rulesOf(options_.scheme));
+        const std::size_t held = bytes();
         if (held > options_.memoryBudgetBytes || estimate > options_.memoryBudgetBytes - held)
             throw MemoryBudgetError("level " + std::to_string(L), held + estimate, held, options_.memoryBudgetBytes);
         const Topology& parent = levels_.back();
@@ -81,6 +91,7 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
         levelTables_.push_back(std::move(table));
         levels_.push_back(std::move(child));
         detail_.push_back(detail);
+        for (const auto& c : fvar_) c->refine(levels_[L - 1], levels_[L], options_);
     }
     if (lastLevel == TopologyDetail::Full) completeLevel(maxLevel);
 }
@@ -226,6 +237,54 @@ StencilTable Refiner::factorizedVaryingStencils(int L) const {
             return varyingStencilBytes(parent, numberChildren(parent, rulesOf(options_.scheme).triangleSplit()));
         });
     return toFloatWithin(composed, budget);
+}
+
+const FVarChannelRefinement& Refiner::channel(int c) const {
+    if (c < 0 || c >= numFVarChannels())
+        throw TopologyError("face-varying channel " + std::to_string(c) + " asked for; the mesh has " +
+                            std::to_string(numFVarChannels()));
+    return *fvar_[std::size_t(c)];
+}
+
+int Refiner::numFVarValues(int c, int L) const {
+    if (L < 0 || L > maxLevel())
+        throw TopologyError("face-varying values asked for level " + std::to_string(L) + "; refined levels are 0.." +
+                            std::to_string(maxLevel()));
+    return channel(c).numValues(L);
+}
+
+IndexSpan Refiner::fvarValuesOfFace(int c, int L, int face) const {
+    const FVarChannelRefinement& ch = channel(c);
+    if (L < 0 || L > maxLevel() || face < 0 || face >= levels_[std::size_t(L)].numFaces())
+        throw TopologyError("face-varying values asked for face " + std::to_string(face) + " of level " +
+                            std::to_string(L));
+    return ch.valuesOfFace(L, face);
+}
+
+IndexSpan Refiner::fvarValues(int c, int L) const {
+    const FVarChannelRefinement& ch = channel(c);
+    if (L < 0 || L > maxLevel())
+        throw TopologyError("face-varying values asked for level " + std::to_string(L) + "; refined levels are 0.." +
+                            std::to_string(maxLevel()));
+    return ch.valuesOfLevel(L);
+}
+
+const StencilTable& Refiner::fvarLevelStencils(int c, int L) const {
+    const FVarChannelRefinement& ch = channel(c);
+    checkRefinedLevel("face-varying stencils", L);
+    return ch.levelStencils(L);
+}
+
+StencilTable Refiner::fvarFactorizedStencils(int c, int L) const {
+    const FVarChannelRefinement& ch = channel(c);
+    checkRefinedLevel("factorized face-varying stencils", L);
+    CompositionBudget budget("the factorized stencils of face-varying channel " + std::to_string(c) + " at level " +
+                                 std::to_string(L),
+                             bytes(), options_.memoryBudgetBytes);
+    return toFloatWithin(composeLevelTables(
+                             L, budget, [&](int l) { return toDoubleTable(ch.levelStencils(l)); },
+                             [&](int l) { return doubleBytes(ch.levelStencils(l)); }),
+                         budget);
 }
 
 void Refiner::checkLimitLevel(int L) const {

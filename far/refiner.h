@@ -2,6 +2,7 @@
 // stencil tables of every level (per level) or of one level from the control vertices (factorized).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include <quadtri/far/level_faces.h>
@@ -13,10 +14,16 @@
 namespace quadtri {
 inline namespace v0 {
 
+class FVarChannelRefinement;
+
 class Refiner {
 public:
-    // Validates the descriptor (TopologyError on bad input) and builds level 0.
+    // Validates the descriptor (TopologyError on bad input) and builds level 0, with its
+    // face-varying channels.
     Refiner(const TopologyDescriptor& desc, const Options& options);
+    ~Refiner();
+    Refiner(Refiner&&) noexcept;
+    Refiner& operator=(Refiner&&) noexcept;
 
     // Refines to `maxLevel` (>= 0), building the topology and per-level stencil table of every
     // level not yet built. Throws TopologyError, before allocating, if what the Refiner holds
@@ -81,23 +88,42 @@ public:
     // factorizedStencils (the double tables being composed, the float table, a 3-float output).
     LimitStencilTable factorizedLimitStencils(int L) const;
 
+    // Face-varying channels (TopologyDescriptor::fvarChannels), refined with the mesh by
+    // refineUniform under Options::fvarLinearInterpolation (docs/face_varying.md). A channel's
+    // values at level 0 are its own; at level L >= 1 they are the values its per-level tables
+    // produce. Level L's faces are faces(L)'s, corner for corner: fvarValuesOfFace(c, L, f)[k] is
+    // the value at faces(L).verticesOfFace(f)[k].
+    int numFVarChannels() const { return int(fvar_.size()); }
+    int numFVarValues(int channel, int L) const;
+    IndexSpan fvarValuesOfFace(int channel, int L, int face) const;
+    // Every corner's value at level L, in faces(L).vertices() order (an index buffer).
+    IndexSpan fvarValues(int channel, int L) const;
+    // Level L's values (L >= 1) over level L - 1's; level 1's over the channel's own values.
+    // Evaluate them like levelStencils, with the channel's width (2 floats for UVs).
+    const StencilTable& fvarLevelStencils(int channel, int L) const;
+    // Level L's values over the channel's own: the per-level tables composed in double, the
+    // memory budget kept as in factorizedStencils.
+    StencilTable fvarFactorizedStencils(int channel, int L) const;
+
     // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L
     // (a looser bound while level L-1 holds its faces only).
     std::size_t estimateLevelBytes(int L) const;
 
-    // Bytes the Refiner holds: every level's topology and per-level table.
+    // Bytes the Refiner holds: every level's topology and per-level table, with its channels'.
     std::size_t bytes() const;
 
 private:
     void checkRefinedLevel(const char* what, int L) const;  // TopologyError unless 1 <= L <= maxLevel()
     void completeLevel(int L);  // rebuilds a faces-only level in full
     void checkLimitLevel(int L) const;
+    const FVarChannelRefinement& channel(int c) const;
 
     Options options_;
     std::vector<TopologyDiagnostic> warnings_;
     std::vector<Topology> levels_;
     std::vector<TopologyDetail> detail_;  // per level
     std::vector<StencilTable> levelTables_;
+    std::vector<std::unique_ptr<FVarChannelRefinement>> fvar_;
 };
 
 }  // namespace v0

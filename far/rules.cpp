@@ -154,7 +154,8 @@ constexpr int kMinChildrenPerPart = 32768;
 // The children are split into one contiguous part per thread; the first part writes straight
 // into the table, the others into their own tables, appended in order afterwards.
 template <typename Table>
-Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options) {
+Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options,
+                         const std::vector<float>* childEdgeSharpness) {
     const int numChildren = num.numFacePoints + t.numEdges() + t.numVertices;
     const SchemeRules& rules = rulesOf(options.scheme);
     const bool smooth = !rules.usesSharpness() || !hasSharpness(t);
@@ -164,10 +165,12 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
         if (num.facePoint[f] >= 0) in.faceOfPoint[num.facePoint[f]] = f;
     if (!smooth) {
         in.childEdgeSharpness.resize(t.vertEdges.size());
+        if (childEdgeSharpness) in.childEdgeSharpness = *childEdgeSharpness;
         const bool chaikin = options.creaseMethod == CreaseMethod::Chaikin;  // edge points read both ends
         if (chaikin) in.childSharpnessAtEnds.resize(t.edgeVerts.size());
         for (int v = 0; v < t.numVertices; ++v) {
-            childEdgeSharpnessAtVertex(t, v, options.creaseMethod, in.childEdgeSharpness.data() + t.vertEdgeOffsets[v]);
+            if (!childEdgeSharpness)
+                childEdgeSharpnessAtVertex(t, v, options.creaseMethod, in.childEdgeSharpness.data() + t.vertEdgeOffsets[v]);
             const IndexSpan edges = t.edgesOfVertex(v);
             for (int i = 0; chaikin && i < edges.size(); ++i) {
                 const int e = edges[i];
@@ -205,8 +208,10 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
     return table;
 }
 
-template StencilTable buildLevelStencils<StencilTable>(const Topology&, const ChildNumbering&, const Options&);
-template StencilTableD buildLevelStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&);
+template StencilTable buildLevelStencils<StencilTable>(const Topology&, const ChildNumbering&, const Options&,
+                                                       const std::vector<float>*);
+template StencilTableD buildLevelStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&,
+                                                         const std::vector<float>*);
 
 }  // namespace v0
 }  // namespace quadtri

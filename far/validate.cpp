@@ -61,6 +61,20 @@ void validateDescriptor(const TopologyDescriptor& d) {
         // Repeated vertices are not an error: the face is read as the loops it walks around
         // (face_loops.h).
     }
+    checkArray(d.numFVarChannels, d.fvarChannels, "numFVarChannels", "fvarChannels");
+    for (int c = 0; c < d.numFVarChannels; ++c) {
+        const FVarChannel& channel = d.fvarChannels[c];
+        const std::string name = "face-varying channel " + std::to_string(c);
+        if (channel.numValues < 0) fail(name + ": numValues is negative (" + std::to_string(channel.numValues) + ")");
+        if (total > 0 && channel.valueIndices == nullptr) fail(name + ": valueIndices is null");
+        const int* values = channel.valueIndices;
+        for (int f = 0; f < d.numFaces; ++f)
+            for (int i = 0; i < d.numVertsPerFace[f]; ++i, ++values)
+                if (*values < 0 || *values >= channel.numValues)
+                    fail(Component::Face, f, -1,
+                         name + ": value index " + std::to_string(*values) + " is out of range [0, " +
+                             std::to_string(channel.numValues) + ")");
+    }
     for (int i = 0; i < d.numCreases; ++i) {
         const int a = d.creaseVertexPairs[2 * i], b = d.creaseVertexPairs[2 * i + 1];
         const std::string what = "vertices " + std::to_string(a) + ", " + std::to_string(b) + ": ";

@@ -129,6 +129,18 @@ file(WRITE "${WORK}/badnum.obj" "v 0 0 0\nv 1 zero 0\n")
 run(2 info "${WORK}/badnum.obj")
 expect_contains("${ERR}" "badnum.obj:2:")
 
+# UVs: a corner without a vt among corners with one, a vt index out of range, a vt that is not a
+# finite number; each names its line.
+file(WRITE "${WORK}/mixed_uv.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nf 1/1 2/2 3\n")
+run(2 refine "${WORK}/mixed_uv.obj" --level 1 -o "${WORK}/x.obj")
+expect_contains("${ERR}" "mixed_uv.obj:6: corner 3 '3' names no texture coordinate (vt)")
+file(WRITE "${WORK}/uv_range.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nf 1/1 2/1 3/2\n")
+run(2 info "${WORK}/uv_range.obj")
+expect_contains("${ERR}" "uv_range.obj:5: texture index 2 is out of range (1 texture coordinates)")
+file(WRITE "${WORK}/uv_nan.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 nan\nf 1/1 2/1 3/1\n")
+run(2 info "${WORK}/uv_nan.obj")
+expect_contains("${ERR}" "uv_nan.obj:4: cannot parse texture coordinate 'nan'")
+
 file(WRITE "${WORK}/repeated.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4 3\n")
 # A vertex met again further on pinches the face: it is read as its loops (here none with 3
 # corners: left out), with a warning in the file's numbering.
@@ -304,6 +316,7 @@ foreach(i RANGE 2 12)
 endforeach()
 file(STRINGS "${MESHES}/osd/loop_icosahedron.obj" icosahedron_faces REGEX "^f ")
 foreach(face ${icosahedron_faces})
+  string(REGEX REPLACE "/[0-9/]*" "" face "${face}")  # positions only: this file has no vt
   file(APPEND "${WORK}/overflow.obj" "${face}\n")
 endforeach()
 foreach(cmd refine demo)

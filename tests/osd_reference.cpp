@@ -193,6 +193,111 @@ OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInter
 
 namespace {
 
+struct UV {
+    float p[2];
+    void Clear(void* = nullptr) { p[0] = p[1] = 0.0f; }
+    void AddWithWeight(const UV& src, float weight) {
+        p[0] += weight * src.p[0];
+        p[1] += weight * src.p[1];
+    }
+};
+
+Sdc::Options::FVarLinearInterpolation sdcFVar(FVarLinearInterpolation fvar) {
+    switch (fvar) {
+        case FVarLinearInterpolation::None: return Sdc::Options::FVAR_LINEAR_NONE;
+        case FVarLinearInterpolation::CornersOnly: return Sdc::Options::FVAR_LINEAR_CORNERS_ONLY;
+        case FVarLinearInterpolation::CornersPlus1: return Sdc::Options::FVAR_LINEAR_CORNERS_PLUS1;
+        case FVarLinearInterpolation::CornersPlus2: return Sdc::Options::FVAR_LINEAR_CORNERS_PLUS2;
+        case FVarLinearInterpolation::Boundaries: return Sdc::Options::FVAR_LINEAR_BOUNDARIES;
+        case FVarLinearInterpolation::All: return Sdc::Options::FVAR_LINEAR_ALL;
+    }
+    throw std::invalid_argument("unknown FVarLinearInterpolation");
+}
+
+}  // namespace
+
+OsdFaceVarying osdFaceVarying(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                              CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int maxLevel) {
+    if (!mesh.hasUVs()) throw std::invalid_argument("osdFaceVarying: the mesh has no UVs");
+    Sdc::Options sdcOptions;
+    sdcOptions.SetVtxBoundaryInterpolation(sdcBoundary(boundary));
+    sdcOptions.SetCreasingMethod(sdcCreasing(creaseMethod));
+    sdcOptions.SetFVarLinearInterpolation(sdcFVar(fvar));
+
+    using Descriptor = Far::TopologyDescriptor;
+    Descriptor desc;
+    desc.numVertices = mesh.numVertices();
+    desc.numFaces = mesh.numFaces();
+    desc.numVertsPerFace = mesh.faceSizes.data();
+    desc.vertIndicesPerFace = mesh.faceVerts.data();
+    desc.numCreases = int(mesh.creaseSharpness.size());
+    desc.creaseVertexIndexPairs = mesh.creasePairs.data();
+    desc.creaseWeights = mesh.creaseSharpness.data();
+    desc.numCorners = int(mesh.cornerSharpness.size());
+    desc.cornerVertexIndices = mesh.corners.data();
+    desc.cornerWeights = mesh.cornerSharpness.data();
+    desc.numHoles = int(mesh.holes.size());
+    desc.holeIndices = mesh.holes.data();
+    Descriptor::FVarChannel channel;
+    channel.numValues = mesh.numUVs();
+    channel.valueIndices = mesh.faceUVs.data();
+    desc.numFVarChannels = 1;
+    desc.fvarChannels = &channel;
+
+    using Factory = Far::TopologyRefinerFactory<Descriptor>;
+    std::unique_ptr<Far::TopologyRefiner> refiner(
+        Factory::Create(desc, Factory::Options(sdcScheme(scheme), sdcOptions)));
+    if (!refiner) throw std::runtime_error("OpenSubdiv refused the topology (see its error output)");
+    Far::TopologyRefiner::UniformOptions uniform(maxLevel);
+    uniform.fullTopologyInLastLevel = true;
+    refiner->RefineUniform(uniform);
+
+    OsdFaceVarying out;
+    std::vector<Vertex> positions(mesh.numVertices());
+    for (int v = 0; v < mesh.numVertices(); ++v)
+        for (int c = 0; c < 3; ++c) positions[v].p[c] = mesh.positions[3 * size_t(v) + c];
+    std::vector<UV> uvs(mesh.numUVs());
+    for (int i = 0; i < mesh.numUVs(); ++i)
+        for (int c = 0; c < 2; ++c) uvs[i].p[c] = mesh.uvs[2 * size_t(i) + c];
+    Far::PrimvarRefiner primvar(*refiner);
+    for (int L = 0; L <= maxLevel; ++L) {
+        const Far::TopologyLevel& level = refiner->GetLevel(L);
+        if (L > 0) {
+            std::vector<Vertex> nextPositions(level.GetNumVertices());
+            std::vector<UV> nextUVs(level.GetNumFVarValues(0));
+            const Vertex* src = positions.data();
+            Vertex* dst = nextPositions.data();
+            primvar.Interpolate(L, src, dst);
+            const UV* uvSrc = uvs.data();
+            UV* uvDst = nextUVs.data();
+            primvar.InterpolateFaceVarying(L, uvSrc, uvDst, 0);
+            positions = std::move(nextPositions);
+            uvs = std::move(nextUVs);
+        }
+        std::vector<float> xyz, st;
+        for (const Vertex& v : positions) xyz.insert(xyz.end(), v.p, v.p + 3);
+        for (const UV& u : uvs) st.insert(st.end(), u.p, u.p + 2);
+        std::vector<int> offsets{0}, verts, values;
+        for (int f = 0; f < level.GetNumFaces(); ++f) {
+            Far::ConstIndexArray fv = level.GetFaceVertices(f);
+            Far::ConstIndexArray fu = level.GetFaceFVarValues(f, 0);
+            for (int k = 0; k < fv.size(); ++k) {
+                verts.push_back(fv[k]);
+                values.push_back(fu[k]);
+            }
+            offsets.push_back(int(verts.size()));
+        }
+        out.positions.push_back(std::move(xyz));
+        out.uvs.push_back(std::move(st));
+        out.faceOffsets.push_back(std::move(offsets));
+        out.faceVerts.push_back(std::move(verts));
+        out.faceValues.push_back(std::move(values));
+    }
+    return out;
+}
+
+namespace {
+
 // A primvar of OpenSubdiv's PrimvarRefiner in Real: double for the limit reference (its own
 // rounding stays well below what the limit tests compare), float for what an engine running
 // OpenSubdiv in float gets.

@@ -84,6 +84,19 @@ struct OsdVarying {
 OsdVarying osdVarying(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                       CreaseMethod creaseMethod, int level, bool smoothTriangles = false);
 
+// OpenSubdiv's face-varying refinement of the mesh's UVs (channel 0 from `vt`), level by level
+// with Far::PrimvarRefiner::InterpolateFaceVarying (float), under `fvar` (Sdc's
+// FVarLinearInterpolation of the same name); positions refined too, to match faces by them.
+struct OsdFaceVarying {
+    std::vector<std::vector<float>> positions;    // per level, 3 floats per vertex
+    std::vector<std::vector<int>> faceOffsets;    // per level: faceVerts[faceOffsets[f] .. faceOffsets[f + 1])
+    std::vector<std::vector<int>> faceVerts;      // per level
+    std::vector<std::vector<int>> faceValues;     // per level, parallel to faceVerts: the corner's value
+    std::vector<std::vector<float>> uvs;          // per level, 2 floats per value
+};
+OsdFaceVarying osdFaceVarying(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                              CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int maxLevel);
+
 // Result of matching each vertex of `ours` to a distinct vertex of `reference` by position.
 struct PositionMatch {
     int numOurs = 0;

@@ -56,9 +56,15 @@ TEST(ObjIo, PositionsAndFaces) {
 }
 
 TEST(ObjIo, SlashFormsAndNegativeIndices) {
-    ObjMesh m = parse(std::string(kQuad) + "f 1/1 2/2/2 3//3 4/4/4\nf -4 -3/1 -2//1\n");
+    ObjMesh m = parse(std::string(kQuad) + "f 1//1 2//2 3//3 4//4\nf -4 -3 -2//1\n");
     EXPECT_EQ(m.faceSizes, (std::vector<int>{4, 3}));
     EXPECT_EQ(m.faceVerts, (std::vector<int>{0, 1, 2, 3, 0, 1, 2}));
+    EXPECT_FALSE(m.hasUVs());
+    // With texture coordinates: v/vt and v/vt/vn, relative vt indices too.
+    ObjMesh t = parse(std::string(kQuad) + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1 0.5\nf 1/1 2/2/2 3/-2 4/4/4\nf -4/-4 -3/2 -2/3/1\n");
+    EXPECT_EQ(t.faceVerts, (std::vector<int>{0, 1, 2, 3, 0, 1, 2}));
+    EXPECT_EQ(t.faceUVs, (std::vector<int>{0, 1, 2, 3, 0, 1, 2}));
+    EXPECT_EQ(t.uvs, (std::vector<float>{0, 0, 1, 0, 1, 1, 0, 1}));
     // Relative to the vertices read so far, not to the final count.
     ObjMesh r = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 5 5 5\nf -1 -2 -3\n");
     EXPECT_EQ(r.faceVerts, (std::vector<int>{0, 1, 2, 3, 2, 1}));
@@ -243,6 +249,41 @@ TEST(ObjIo, FaceErrors) {
     // Out of range of the final vertex count: reported after the whole file, naming the face's line.
     expectError("v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\nf 1 2 4\n# end\n", 5,
                 "face index 4 is out of range (3 vertices)");
+}
+
+TEST(ObjIo, TextureCoordinates) {
+    // vt lines without corners that name them: no channel.
+    ObjMesh plain = parse(std::string(kQuad) + "vt 0 0\nf 1 2 3 4\n");
+    EXPECT_EQ(plain.numUVs(), 1);
+    EXPECT_FALSE(plain.hasUVs());
+    FVarChannel channel;
+    EXPECT_EQ(plain.descriptor(channel).numFVarChannels, 0);
+    ObjMesh uv = parse(std::string(kQuad) + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
+    const TopologyDescriptor d = uv.descriptor(channel);
+    ASSERT_EQ(d.numFVarChannels, 1);
+    EXPECT_EQ(d.fvarChannels, &channel);
+    EXPECT_EQ(channel.numValues, 4);
+    EXPECT_EQ(std::vector<int>(channel.valueIndices, channel.valueIndices + 4), (std::vector<int>{0, 1, 2, 3}));
+    EXPECT_EQ(uv.descriptor().numFVarChannels, 0);
+}
+
+TEST(ObjIo, TextureCoordinateErrors) {
+    const std::string q = std::string(kQuad) + "vt 0 0\nvt 1 0\nvt 1 1\n";
+    // Some corners name a vt and others not: the corner, and the line that decided.
+    expectError(q + "f 1/1 2/2 3/3\nf 1/1 3/3 4\n", 9, "corner 3 '4' names no texture coordinate (vt) but the first corner of line 8 does");
+    expectError(q + "f 1 2 3\nf 1/1 3/3 4/1\n", 9, "corner 1 '1/1' names a texture coordinate (vt) but the first corner of line 8 does not");
+    expectError(q + "f 1/1 2//2 3/3\n", 8, "corner 2 '2//2' names no texture coordinate");
+    // Out of range: after the whole file, naming the face's line.
+    expectError(q + "f 1/1 2/2 3/4\n# end\n", 8, "texture index 4 is out of range (3 texture coordinates)");
+    expectError(q + "f 1/1 2/0 3/3\n", 8, "texture index 0 (OBJ indices start at 1)");
+    expectError(q + "f 1/1 2/-4 3/3\n", 8, "texture index -4 is before the first texture coordinate (3 read so far)");
+    expectError(q + "f 1/1 2/x 3/3\n", 8, "cannot parse texture index 'x'");
+    // Not finite, or malformed.
+    expectError(std::string(kQuad) + "vt 0 nan\n", 5, "cannot parse texture coordinate 'nan'");
+    expectError(std::string(kQuad) + "vt inf 0\n", 5, "cannot parse texture coordinate 'inf'");
+    expectError(std::string(kQuad) + "vt 0 0 1e60\n", 5, "texture coordinate '1e60' is beyond the float range");
+    expectError(std::string(kQuad) + "vt 0\n", 5, "vt takes 2 texture coordinates (3 with w), got 1");
+    expectError(std::string(kQuad) + "vt 0 0 0 0\n", 5, "vt takes 2 texture coordinates (3 with w), got 4");
 }
 
 TEST(ObjIo, TagErrors) {

@@ -38,6 +38,7 @@ public:
         if (in_.bad()) throw ObjError(line_ == 0 ? name_ + ": cannot read file" : where(line_ + 1) + "read error");
         reportUnknown();
         checkFaceIndices();
+        checkUVIndices();
         return std::move(mesh_);
     }
 
@@ -46,7 +47,7 @@ private:
 
     // Statements this reader skips without a word: parts of OBJ that refinement does not use.
     static bool ignored(std::string_view key) {
-        return key == "vt" || key == "vn" || key == "vp" || key == "o" || key == "g" || key == "s" ||
+        return key == "vn" || key == "vp" || key == "o" || key == "g" || key == "s" ||
                key == "usemtl" || key == "mtllib";
     }
 
@@ -59,6 +60,8 @@ private:
     std::istream& in_;
     const std::string& name_;
     int line_ = 0;
+    int firstFaceLine_ = 0;        // the first `f` line: whether its first corner names a `vt` decides for all
+    bool cornersHaveUVs_ = false;
     bool sawContent_ = false;  // a line with a statement was seen (for the format sniffing)
     bool sawObjStatement_ = false;
     std::vector<Unknown> unknown_;  // in order of first appearance
@@ -175,6 +178,8 @@ private:
         std::string_view key = tok[0];
         if (key == "v") {
             parseVertex(tok);
+        } else if (key == "vt") {
+            parseTexCoord(tok);
         } else if (key == "f") {
             parseFace(tok);
         } else if (key == "t") {
@@ -194,23 +199,44 @@ private:
         for (size_t c = 4; c <= n; ++c) toFloat(tok[c], n == 4 ? "coordinate" : "colour");  // checked, not used
     }
 
+    void parseTexCoord(const std::vector<std::string_view>& tok) {
+        const size_t n = tok.size() - 1;
+        if (n != 2 && n != 3) fail("vt takes 2 texture coordinates (3 with w), got " + std::to_string(n));
+        for (size_t c = 1; c <= 2; ++c) mesh_.uvs.push_back(toFloat(tok[c], "texture coordinate"));
+        if (n == 3) toFloat(tok[3], "texture coordinate");  // checked, not used
+    }
+
+    // A 1-based or negative (relative) OBJ index into `count` items read so far, made 0-based;
+    // an index past the end is checked once the whole file is read.
+    int toIndex(std::string_view text, const char* what, const char* items, int count) const {
+        int index = toInt(text, what);
+        if (index == 0) fail(std::string(what) + " 0 (OBJ indices start at 1)");
+        if (index > 0) return index - 1;
+        index += count;
+        if (index < 0)
+            fail(std::string(what) + " " + std::string(text) + " is before the first " + items + " (" +
+                 std::to_string(count) + " read so far)");
+        return index;
+    }
+
     void parseFace(const std::vector<std::string_view>& tok) {
         int corners = int(tok.size()) - 1;
         if (corners < 3) fail("face has " + std::to_string(corners) + " corners, needs at least 3");
+        const bool first = firstFaceLine_ == 0;
+        if (first) firstFaceLine_ = line_;
         for (int c = 1; c <= corners; ++c) {
             std::string_view corner = tok[c];
-            std::string_view pos = corner.substr(0, corner.find('/'));
-            int index = toInt(pos, "face index");
-            if (index == 0) fail("face index 0 (OBJ indices start at 1)");
-            if (index < 0) {
-                index += mesh_.numVertices();
-                if (index < 0)
-                    fail("face index " + std::string(pos) + " is before the first vertex (" +
-                         std::to_string(mesh_.numVertices()) + " read so far)");
-            } else {
-                index -= 1;  // checked against the final vertex count in checkFaceIndices()
-            }
-            mesh_.faceVerts.push_back(index);
+            const size_t slash = corner.find('/');
+            std::string_view pos = corner.substr(0, slash);
+            mesh_.faceVerts.push_back(toIndex(pos, "face index", "vertex", mesh_.numVertices()));
+            std::string_view uv = slash == std::string_view::npos ? std::string_view() : corner.substr(slash + 1);
+            uv = uv.substr(0, uv.find('/'));
+            if (first && c == 1) cornersHaveUVs_ = !uv.empty();
+            if (uv.empty() == cornersHaveUVs_)
+                fail("corner " + std::to_string(c) + " " + quote(corner) + (uv.empty() ? " names no" : " names a") +
+                     " texture coordinate (vt) but the first corner of line " + std::to_string(firstFaceLine_) +
+                     (uv.empty() ? " does" : " does not") + "; every corner must name one, or none");
+            if (!uv.empty()) mesh_.faceUVs.push_back(toIndex(uv, "texture index", "texture coordinate", mesh_.numUVs()));
         }
         mesh_.faceSizes.push_back(corners);
         mesh_.faceLines.push_back(line_);
@@ -225,6 +251,16 @@ private:
                     throw ObjError(where(mesh_.faceLines[f]) + "face index " +
                                    std::to_string(mesh_.faceVerts[k] + 1) + " is out of range (" +
                                    std::to_string(n) + " vertices)");
+    }
+
+    void checkUVIndices() const {
+        const int n = mesh_.numUVs();
+        size_t k = 0;
+        for (int f = 0; f < mesh_.numFaces() && !mesh_.faceUVs.empty(); ++f)
+            for (int c = 0; c < mesh_.faceSizes[f]; ++c, ++k)
+                if (mesh_.faceUVs[k] >= n)
+                    throw ObjError(where(mesh_.faceLines[f]) + "texture index " + std::to_string(mesh_.faceUVs[k] + 1) +
+                                   " is out of range (" + std::to_string(n) + " texture coordinates)");
     }
 
     // `t name I/F/S ints floats strings`
@@ -332,6 +368,16 @@ TopologyDescriptor ObjMesh::descriptor() const {
     d.cornerWeights = cornerSharpness.data();
     d.numHoles = int(holes.size());
     d.holeIndices = holes.data();
+    return d;
+}
+
+TopologyDescriptor ObjMesh::descriptor(FVarChannel& uvChannel) const {
+    TopologyDescriptor d = descriptor();
+    if (!hasUVs()) return d;
+    uvChannel.numValues = numUVs();
+    uvChannel.valueIndices = faceUVs.data();
+    d.numFVarChannels = 1;
+    d.fvarChannels = &uvChannel;
     return d;
 }
 

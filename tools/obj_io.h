@@ -25,6 +25,11 @@ struct ObjMesh {
     std::vector<float> positions;  // 3 floats per `v` line
     std::vector<int> faceSizes;    // corners per `f` line
     std::vector<int> faceVerts;    // 0-based position indices
+    // Texture coordinates: 2 floats per `vt` line (a third, w, is checked and dropped), and per
+    // face corner its 0-based `vt` index (`f v/vt`, `f v/vt/vn`), parallel to faceVerts; empty
+    // when no corner names one. Either every corner names one or none does.
+    std::vector<float> uvs;
+    std::vector<int> faceUVs;
     std::vector<int> creasePairs;  // 2 per crease
     std::vector<float> creaseSharpness;
     std::vector<int> corners;
@@ -41,8 +46,13 @@ struct ObjMesh {
 
     int numVertices() const { return int(positions.size() / 3); }
     int numFaces() const { return int(faceSizes.size()); }
-    // A view of the arrays above; valid while this mesh lives.
+    int numUVs() const { return int(uvs.size() / 2); }
+    bool hasUVs() const { return !faceUVs.empty(); }
+    // A view of the arrays above; valid while this mesh lives. No face-varying channel.
     TopologyDescriptor descriptor() const;
+    // The same with the UVs as face-varying channel 0 when the file has them (`uvChannel` is
+    // where the channel's view is kept: it must outlive the descriptor); none without.
+    TopologyDescriptor descriptor(FVarChannel& uvChannel) const;
     // `base` with the boundary and crease method replaced where the file has tags for them, and
     // the smooth-triangle rule where the file asks for it and base.scheme has it (catmull-clark;
     // OpenSubdiv's own shape reader likewise applies the tag to Catmark shapes only).

@@ -17,8 +17,12 @@ inline namespace v0 {
 // Refiner stores) or StencilTableD (double weights, for exact tests and composition).
 // Large levels are built on the calling TBB arena's threads; the table does not depend on
 // how many there are.
+// `childEdgeSharpness` (parallel to parent.vertEdges), when given, replaces the sharpness the
+// children of each vertex's edges would decay to from the parent's own: a face-varying channel's
+// value mesh takes the mesh's (docs/face_varying.md).
 template <typename Table>
-Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering, const Options& options);
+Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering, const Options& options,
+                         const std::vector<float>* childEdgeSharpness = nullptr);
 
 }  // namespace v0
 }  // namespace quadtri

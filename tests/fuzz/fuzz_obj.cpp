@@ -1,5 +1,5 @@
-// libFuzzer target: bytes as an OBJ file, read, refined to level 3 under every scheme, checked by
-// fuzz_oracles.h. A malformed file must be refused with io::ObjError, a bad mesh with TopologyError.
+// libFuzzer target: bytes as an OBJ file, read, refined to level 3 under every scheme with its UVs,
+// checked by fuzz_oracles.h. A malformed file must be refused with io::ObjError, a bad mesh with TopologyError.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -18,13 +18,26 @@ constexpr size_t kMaxInputBytes = 4096;
 constexpr int kLevels = 3;
 const char* const kFileName = "fuzz.obj";
 
+// Every level's UV values are what its table makes, and every face corner names one of them.
+void checkUVs(const Refiner& refiner) {
+    for (int c = 0; c < refiner.numFVarChannels(); ++c)
+        for (int L = 0; L <= refiner.maxLevel(); ++L) {
+            const int n = refiner.numFVarValues(c, L);
+            if (L > 0 && refiner.fvarLevelStencils(c, L).numStencils() != n) fuzz::fail("a UV table of the wrong size");
+            for (int f = 0; f < refiner.faces(L).numFaces(); ++f)
+                for (int value : refiner.fvarValuesOfFace(c, L, f))
+                    if (value < 0 || value >= n) fuzz::fail("a face corner's UV index out of range");
+        }
+}
+
 void refineUnder(const io::ObjMesh& mesh, Scheme scheme) {
     Options options = mesh.applyTags(Options());
     options.scheme = scheme;
     options.memoryBudgetBytes = fuzz::kFuzzBudgetBytes;
     std::unique_ptr<Refiner> refiner;
+    FVarChannel uvs;
     try {
-        refiner = std::make_unique<Refiner>(mesh.descriptor(), options);
+        refiner = std::make_unique<Refiner>(mesh.descriptor(uvs), options);
     } catch (const TopologyError& e) {
         fuzz::expectMessage(e);
         // The CLI names the file (and line) of a topology error.
@@ -37,6 +50,7 @@ void refineUnder(const io::ObjMesh& mesh, Scheme scheme) {
         fuzz::expectMessage(e);
     }
     fuzz::checkRefinement(*refiner, mesh.positions);
+    checkUVs(*refiner);
 }
 
 }  // namespace
