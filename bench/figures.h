@@ -32,17 +32,22 @@ struct OsdFigures {
 };
 
 // Per-frame limit positions and unit normals of the last level's vertices.
+// The factorized figures are absent where the memory budget refuses that table (the chain,
+// whose tables are far smaller, still runs).
 struct LimitFigures {
-    std::size_t tableBytes = 0;           // the factorized LimitStencilTable
-    double limitSerialMs = 0;             // CpuEvaluator::EvalLimitStencils, factorized (control -> limit)
-    double limitThreadedMs = 0;           // TbbEvaluator, the same
-    double levelsThenLimitSerialMs = 0;   // per-level tables to level N, then the limit table over level N
+    std::optional<std::size_t> tableBytes;  // the factorized LimitStencilTable
+    std::size_t chainTableBytes = 0;        // the per-level tables and the limit table over level N
+    std::optional<double> limitSerialMs;    // CpuEvaluator::EvalLimitStencils, factorized (control -> limit)
+    std::optional<double> limitThreadedMs;  // TbbEvaluator, the same
+    double levelsThenLimitSerialMs = 0;     // per-level tables to level N, then the limit table over level N
     double levelsThenLimitThreadedMs = 0;
-    double meshNormalsSerialMs = 0;       // EvalMeshNormals of level N (its positions given)
+    double meshNormalsSerialMs = 0;         // EvalMeshNormals of level N (its positions given)
     double meshNormalsThreadedMs = 0;
-    std::optional<double> limitVulkanMs;  // VulkanLimitEvaluator, factorized, submit to fence
-    double bestSerialMs() const { return std::min(limitSerialMs, levelsThenLimitSerialMs); }
-    double bestThreadedMs() const { return std::min(limitThreadedMs, levelsThenLimitThreadedMs); }
+    std::optional<double> limitVulkanMs;    // VulkanLimitEvaluator, factorized, submit to fence
+    double bestSerialMs() const { return std::min(limitSerialMs.value_or(levelsThenLimitSerialMs), levelsThenLimitSerialMs); }
+    double bestThreadedMs() const {
+        return std::min(limitThreadedMs.value_or(levelsThenLimitThreadedMs), levelsThenLimitThreadedMs);
+    }
 };
 
 struct OsdLimitFigures {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "bench/figures.h"
@@ -31,9 +32,11 @@ public:
     // (threaded = serial bitwise; per-level chain and factorized within 1e-5 of the diagonal).
     void prepare();
 
-    const std::vector<float>& positions() const { return position_; }  // factorized, serial
+    const std::vector<float>& positions() const { return position_; }  // factorized (else the chain), serial
     const std::vector<float>& normals() const { return normal_; }
-    int numPoints() const { return limit_.numStencils(); }
+    int numPoints() const { return limitOverLevel_.numStencils(); }
+    // Why the factorized table is not there (the memory budget refused it), or empty.
+    const std::string& factorizedRefused() const { return factorizedRefused_; }
 
     // vulkan: when given, also the factorized limit on that device.
     LimitFigures measure(int reps, VulkanContext* vulkan);
@@ -51,6 +54,7 @@ private:
     MeshNormalTable meshTable_;
     std::vector<std::vector<float>> levels_;  // per level, for the chain (level 0: the control positions)
     std::vector<float> position_, normal_;
+    std::string factorizedRefused_;
 };
 
 }  // namespace quadtri::bench

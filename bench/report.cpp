@@ -30,6 +30,8 @@ std::string jsonString(const std::string& s) {
 std::string ms(double v) { return number(v, v >= 100 ? "%.0f" : v >= 10 ? "%.1f" : v >= 1 ? "%.2f" : "%.3f"); }
 std::string ms(std::optional<double> v) { return v ? ms(*v) : "–"; }
 std::string mib(std::size_t bytes) { return ms(double(bytes) / (1 << 20)); }
+std::string mib(std::optional<std::size_t> bytes) { return bytes ? mib(*bytes) : "–"; }
+std::string json(std::optional<std::size_t> v) { return v ? std::to_string(*v) : "null"; }
 std::string ratio(double num, double den) { return den > 0 ? number(num / den, "%.2f") : "–"; }
 std::string ratio(double num, std::optional<double> den) { return den ? ratio(num, *den) : "–"; }
 
@@ -40,8 +42,8 @@ void writeLimitJson(std::ostream& f, const std::vector<LimitCaseResult>& cases) 
         const LimitFigures& q = c.quadtri;
         f << (i ? ",\n" : "\n") << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme)
           << ", \"level\": " << c.level << ", \"points\": " << c.points << ",\n"
-          << "     \"quadtri\": {\"table_bytes\": " << q.tableBytes << ", \"limit_serial_ms\": " << number(q.limitSerialMs)
-          << ", \"limit_threaded_ms\": " << number(q.limitThreadedMs)
+          << "     \"quadtri\": {\"table_bytes\": " << json(q.tableBytes) << ", \"chain_table_bytes\": " << q.chainTableBytes
+          << ", \"limit_serial_ms\": " << json(q.limitSerialMs) << ", \"limit_threaded_ms\": " << json(q.limitThreadedMs)
           << ", \"levels_then_limit_serial_ms\": " << number(q.levelsThenLimitSerialMs)
           << ", \"levels_then_limit_threaded_ms\": " << number(q.levelsThenLimitThreadedMs)
           << ", \"mesh_normals_serial_ms\": " << number(q.meshNormalsSerialMs)
