@@ -32,10 +32,12 @@ io::ObjMesh loadMesh(const MeshArgs& args) {
     return mesh;
 }
 
-// The analyzer over a file's mesh; topology errors name the file line of the face or tag at fault.
+// The analyzer over a file's mesh, with its UVs as face-varying channel 0 when the file has
+// them; topology errors name the file line of the face or tag at fault.
 Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options) {
     try {
-        Refiner refiner(mesh.descriptor(), options);
+        FVarChannel uvs;
+        Refiner refiner(mesh.descriptor(uvs), options);
         for (const TopologyDiagnostic& w : refiner.warnings()) std::cerr << "quadtri: warning: " << mesh.describe(w) << "\n";
         return refiner;
     } catch (const MemoryBudgetError&) {
@@ -69,6 +71,7 @@ Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     if (args.smoothTriangles) options.smoothTriangles = true;  // the Refiner refuses it where the scheme has no such rule
     if (args.boundary) options.boundary = *args.boundary;
     if (args.creaseMethod) options.creaseMethod = *args.creaseMethod;
+    if (args.uvInterpolation) options.fvarLinearInterpolation = *args.uvInterpolation;
     if (args.memoryBudget) options.memoryBudgetBytes = *args.memoryBudget;
     return options;
 }
@@ -131,23 +134,44 @@ void printBase(const Topology& t, const Options& options) {
     std::printf("\n");
 }
 
+// "face-varying channel 0 (uv): 14 values, ..." per channel, or that there are none.
+void printChannels(const Refiner& refiner) {
+    if (refiner.numFVarChannels() == 0) std::printf("no face-varying channels\n");
+    for (int c = 0; c < refiner.numFVarChannels(); ++c) {
+        const FVarSeams seams = countFVarSeams(refiner, c);
+        std::printf("face-varying channel %d (uv): %d values, interpolation %s; seams: %d edges, %d vertices with "
+                    "more than one value\n",
+                    c, refiner.numFVarValues(c, 0), toString(refiner.options().fvarLinearInterpolation), seams.edges,
+                    seams.vertices);
+    }
+}
+
+// " 14 |" per channel: its number of values at level L.
+std::string channelValues(const Refiner& refiner, int L) {
+    std::string cells;
+    for (int c = 0; c < refiner.numFVarChannels(); ++c) cells += " " + std::to_string(refiner.numFVarValues(c, L)) + " |";
+    return cells;
+}
+
 }  // namespace
 
 namespace {
 
 // What draws the level in a glTF file: its draw buffers in vertex-cache order, positions and
-// normals gathered into draw-vertex order.
-io::TriangleMesh triangleMeshOf(const LevelFaces& faces, const Surface& surface) {
-    DrawBuffers b = buildDrawBuffers(faces);
+// normals gathered into draw-vertex order, and UVs (`uvs.values` set) by the draw vertices' values.
+io::TriangleMesh triangleMeshOf(const LevelFaces& faces, const Surface& surface, const io::ObjUVs& uvs) {
+    DrawBuffers b = uvs.values ? buildDrawBuffers(faces, {uvs.cornerValues}, {uvs.numValues}) : buildDrawBuffers(faces);
     io::optimizeVertexCache(b);
     io::TriangleMesh m;
     m.triangles = b.triangles;
-    for (int v : b.vertexOf) {
-        const float* p = surface.positions.data() + 3 * std::size_t(v);
+    for (int d = 0; d < b.numVertices(); ++d) {
+        const std::size_t v = std::size_t(b.vertexOf[std::size_t(d)]);
+        const float* p = surface.positions.data() + 3 * v;
         m.positions.insert(m.positions.end(), p, p + 3);
-        if (surface.normals.empty()) continue;
-        const float* n = surface.normals.data() + 3 * std::size_t(v);
-        m.normals.insert(m.normals.end(), n, n + 3);
+        if (!surface.normals.empty()) m.normals.insert(m.normals.end(), &surface.normals[3 * v], &surface.normals[3 * v] + 3);
+        if (!uvs.values) continue;
+        const float* uv = uvs.values + 2 * std::size_t(b.valueOf[0][std::size_t(d)]);
+        m.uvs.insert(m.uvs.end(), uv, uv + 2);
     }
     return m;
 }
@@ -165,18 +189,24 @@ int runRefine(const RefineArgs& args) {
     const Options options = makeOptions(args.mesh, mesh);
     Refiner refiner = makeRefiner(mesh, options);
     refiner.refineUniform(args.level);
-    std::vector<float> positions =
-        args.level > 0 ? evaluateLevels(args.evaluator, refiner, args.level, mesh.positions) : mesh.positions;
+    // The positions and, where the file has them, the UVs (channel 0), level by level.
+    std::vector<LevelData> data{positionLevels(refiner, args.level, mesh.positions)};
+    const bool withUVs = refiner.numFVarChannels() > 0;
+    if (withUVs) data.push_back(fvarLevels(refiner, 0, args.level, mesh.uvs, 2));
+    std::vector<std::vector<float>> refined = evaluateLevels(args.evaluator, data);
     // glTF viewers shade with the file's normals: mesh normals unless asked otherwise.
     const NormalKind fallback = gltf ? NormalKind::Mesh : NormalKind::None;
     const NormalKind normals = args.normals.value_or(args.limit ? NormalKind::Limit : fallback);
-    const Surface surface = evaluateSurface(args.evaluator, refiner, args.level, std::move(positions), args.limit, normals);
+    const Surface surface = evaluateSurface(args.evaluator, refiner, args.level, std::move(refined[0]), args.limit, normals);
     checkFinite(surface.positions, mesh, args.level, options.scheme);
     const LevelFaces faces = refiner.faces(args.level);
+    io::ObjUVs uvs;
+    if (withUVs) uvs = {refined[1].data(), refiner.numFVarValues(0, args.level), refiner.fvarValues(0, args.level).begin()};
     if (gltf)
-        io::writeGltf(args.output, triangleMeshOf(faces, surface));
+        io::writeGltf(args.output, triangleMeshOf(faces, surface, uvs));
     else
-        io::writeObj(args.output, surface.positions.data(), faces, surface.normals.empty() ? nullptr : surface.normals.data());
+        io::writeObj(args.output, surface.positions.data(), faces, surface.normals.empty() ? nullptr : surface.normals.data(),
+                     uvs);
     std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,
                 faces.numVertices(), outputFaces(faces), args.output.c_str());
     return 0;
@@ -189,14 +219,24 @@ int runInfo(const InfoArgs& args) {
     std::printf("%s\n", args.mesh.input.c_str());
     printBase(refiner.level(0), options);
 
+    printChannels(refiner);
+
     refiner.refineUniform(args.level, TopologyDetail::Full);  // the table counts sharp edges of every level
-    std::printf("\n| level | vertices | faces | sharp edges | stencils | level table bytes | factorized table bytes |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+    // One column more per face-varying channel: its values at each level.
+    std::string channelHeads, channelRule;
+    for (int c = 0; c < refiner.numFVarChannels(); ++c) {
+        channelHeads += " channel " + std::to_string(c) + " values |";
+        channelRule += "---:|";
+    }
+    std::printf("\n| level | vertices | faces | sharp edges | stencils | level table bytes | factorized table bytes |%s\n",
+                channelHeads.c_str());
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|%s\n", channelRule.c_str());
     for (int L = 0; L <= args.level; ++L) {
         const Topology& t = refiner.level(L);
         const int sharp = countSharpEdges(t).sharp;
         if (L == 0) {
-            std::printf("| 0 | %d | %d | %d | - | - | - |\n", t.numVertices, outputFaces(LevelFaces(t)), sharp);
+            std::printf("| 0 | %d | %d | %d | - | - | - |%s\n", t.numVertices, outputFaces(LevelFaces(t)), sharp,
+                        channelValues(refiner, 0).c_str());
             continue;
         }
         const StencilTable& perLevel = refiner.levelStencils(L);
@@ -207,8 +247,8 @@ int runInfo(const InfoArgs& args) {
             factorized = std::to_string(refiner.factorizedStencils(L).bytes());
         } catch (const MemoryBudgetError&) {
         }
-        std::printf("| %d | %d | %d | %d | %d | %zu | %s |\n", L, t.numVertices, outputFaces(LevelFaces(t)), sharp,
-                    perLevel.numStencils(), perLevel.bytes(), factorized.c_str());
+        std::printf("| %d | %d | %d | %d | %d | %zu | %s |%s\n", L, t.numVertices, outputFaces(LevelFaces(t)), sharp,
+                    perLevel.numStencils(), perLevel.bytes(), factorized.c_str(), channelValues(refiner, L).c_str());
     }
     return 0;
 }
@@ -249,8 +289,15 @@ int runDemo(const DemoArgs& args) {
         std::printf("| %d | %d | %d | %d | %zu | %.3f | %.3f | %s |\n", L, faces.numVertices(), outputFaces(faces),
                     table.numStencils(), table.bytes(), analyzerMs, evalMs[3], vulkanMs);
         std::fflush(stdout);
+        // The UVs, where the file has them, through the channel's per-level tables (untimed).
+        std::vector<float> uvs;
+        io::ObjUVs objUVs;
+        if (refiner.numFVarChannels() > 0) {
+            uvs = std::move(evaluateLevels(EvaluatorKind::Cpu, {fvarLevels(refiner, 0, L, mesh.uvs, 2)})[0]);
+            objUVs = {uvs.data(), refiner.numFVarValues(0, L), refiner.fvarValues(0, L).begin()};
+        }
         io::writeObj((std::filesystem::path(args.outDir) / (stem + "_level" + std::to_string(L) + ".obj")).string(),
-                     positions.data(), faces);
+                     positions.data(), faces, nullptr, objUVs);
     }
     return 0;
 }

@@ -20,6 +20,7 @@ struct MeshArgs {
     std::optional<Scheme> scheme;                   // default: Schaefer-Warren
     std::optional<BoundaryInterpolation> boundary;  // default: the file's tag, else edge only
     std::optional<CreaseMethod> creaseMethod;       // default: the file's tag, else uniform
+    std::optional<FVarLinearInterpolation> uvInterpolation;  // default: Options' (OpenSubdiv's corners-plus1)
     std::optional<std::size_t> memoryBudget;        // default: Options::memoryBudgetBytes
     bool smoothTriangles = false;                   // --smooth-triangles (catmull-clark only); else the file's tag
 };
@@ -54,17 +55,28 @@ struct Surface {
 Surface evaluateSurface(EvaluatorKind kind, const Refiner& refiner, int level, std::vector<float> refined, bool limit,
                         NormalKind normals);
 
-// 3-float positions of level `level` (>= 1) of `refiner`, through its per-level tables one after
-// another with the chosen evaluator (linear in the tables; a factorized table can be far larger
-// near high-valence vertices). Vulkan without a usable device falls back to the CPU evaluator,
-// saying so on stderr.
+// Data refined with the mesh: `width` floats per element of `control`, taken through the
+// per-level tables of levels 1, 2, ... one after another.
+struct LevelData {
+    std::vector<const StencilTable*> tables;
+    int width = 3;
+    const std::vector<float>* control = nullptr;
+};
+// Level 1..level's tables of the positions (3 floats) and of face-varying channel `channel`.
+LevelData positionLevels(const Refiner& refiner, int level, const std::vector<float>& control);
+LevelData fvarLevels(const Refiner& refiner, int channel, int level, const std::vector<float>& values, int width);
+
+// Each of `data` at its last level, through the chosen evaluator (linear in the tables; a
+// factorized table can be far larger near high-valence vertices). Vulkan without a usable device
+// falls back to the CPU evaluator, saying so on stderr.
+std::vector<std::vector<float>> evaluateLevels(EvaluatorKind kind, const std::vector<LevelData>& data);
+// 3-float positions of level `level` (>= 1) of `refiner`, as above.
 std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, int level, const std::vector<float>& control);
 
 // The Vulkan side (tools/vulkan_side.cpp, or tools/no_vulkan.cpp in a build without Vulkan).
-// Level `level`'s 3-float positions on a headless Vulkan device, level by level, or nothing
+// Each of `data` at its last level on a headless Vulkan device, level by level, or nothing
 // without one (saying why on stderr).
-std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner& refiner, int level,
-                                                         const std::vector<float>& control);
+std::optional<std::vector<std::vector<float>>> evaluateLevelsOnVulkan(const std::vector<LevelData>& data);
 // The same as evaluateSurface on a headless Vulkan device, or nothing without one (saying why).
 std::optional<Surface> evaluateSurfaceOnVulkan(const Refiner& refiner, int level, const std::vector<float>& refined,
                                                bool limit, NormalKind normals);
@@ -78,6 +90,14 @@ VulkanTimingPtr openVulkanTiming();
 // Median milliseconds of `runs` Vulkan evaluations of `table` (record, submit, wait on the fence;
 // the table and control vertices are uploaded once beforehand, outside the timing).
 double vulkanEvalMs(VulkanTiming& timing, const StencilTable& table, const std::vector<float>& control, int runs);
+
+// Where face-varying channel `channel` of `refiner` is cut at level 0: the mesh edges whose faces
+// disagree on a value at either end, and the vertices with more than one value.
+struct FVarSeams {
+    int edges = 0;
+    int vertices = 0;
+};
+FVarSeams countFVarSeams(const Refiner& refiner, int channel);
 
 struct InfoArgs {
     MeshArgs mesh;

@@ -1,5 +1,6 @@
 // `quadtri refine --evaluator cpu|tbb|vulkan`: the per-level tables, and the limit or mesh normals
 // of `--limit` / `--normals`, applied by the chosen evaluator.
+#include <algorithm>
 #include <optional>
 #include <utility>
 
@@ -11,24 +12,44 @@
 
 namespace quadtri::cli {
 
-std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, int level, const std::vector<float>& control) {
-    if (kind == EvaluatorKind::Vulkan) {
-        if (std::optional<std::vector<float>> positions = evaluateLevelsOnVulkan(refiner, level, control))
-            return std::move(*positions);
+LevelData positionLevels(const Refiner& refiner, int level, const std::vector<float>& control) {
+    LevelData data{{}, 3, &control};
+    for (int L = 1; L <= level; ++L) data.tables.push_back(&refiner.levelStencils(L));
+    return data;
+}
+
+LevelData fvarLevels(const Refiner& refiner, int channel, int level, const std::vector<float>& values, int width) {
+    LevelData data{{}, width, &values};
+    for (int L = 1; L <= level; ++L) data.tables.push_back(&refiner.fvarLevelStencils(channel, L));
+    return data;
+}
+
+std::vector<std::vector<float>> evaluateLevels(EvaluatorKind kind, const std::vector<LevelData>& data) {
+    const bool anyTable = std::any_of(data.begin(), data.end(), [](const LevelData& d) { return !d.tables.empty(); });
+    if (kind == EvaluatorKind::Vulkan && anyTable) {
+        if (std::optional<std::vector<std::vector<float>>> refined = evaluateLevelsOnVulkan(data))
+            return std::move(*refined);
         kind = EvaluatorKind::Cpu;
     }
-    const BufferDescriptor d(0, 3, 3);
-    std::vector<float> previous = control, next;
-    for (int L = 1; L <= level; ++L) {
-        const StencilTable& table = refiner.levelStencils(L);
-        next.assign(std::size_t(table.numStencils()) * 3, 0.0f);
-        if (kind == EvaluatorKind::Tbb)
-            TbbEvaluator::EvalStencils(previous.data(), d, next.data(), d, table);
-        else
-            CpuEvaluator::EvalStencils(previous.data(), d, next.data(), d, table);
-        previous.swap(next);
+    std::vector<std::vector<float>> refined;
+    for (const LevelData& item : data) {
+        const BufferDescriptor d(0, item.width, item.width);
+        std::vector<float> previous = *item.control, next;
+        for (const StencilTable* table : item.tables) {
+            next.assign(std::size_t(table->numStencils()) * std::size_t(item.width), 0.0f);
+            if (kind == EvaluatorKind::Tbb)
+                TbbEvaluator::EvalStencils(previous.data(), d, next.data(), d, *table);
+            else
+                CpuEvaluator::EvalStencils(previous.data(), d, next.data(), d, *table);
+            previous.swap(next);
+        }
+        refined.push_back(std::move(previous));
     }
-    return previous;
+    return refined;
+}
+
+std::vector<float> evaluateLevels(EvaluatorKind kind, const Refiner& refiner, int level, const std::vector<float>& control) {
+    return std::move(evaluateLevels(kind, {positionLevels(refiner, level, control)})[0]);
 }
 
 Surface evaluateSurface(EvaluatorKind kind, const Refiner& refiner, int level, std::vector<float> refined, bool limit,

@@ -35,6 +35,24 @@ std::string schemeHelp() {
     return help;
 }
 
+// "UV interpolation (default ...)" and one line per option with Blender's "UV Smooth" label
+// (docs/face_varying.md has the table).
+std::string uvInterpolationHelp() {
+    static const std::map<FVarLinearInterpolation, const char*> blender{
+        {FVarLinearInterpolation::None, "All"},
+        {FVarLinearInterpolation::CornersOnly, "Keep Corners"},
+        {FVarLinearInterpolation::CornersPlus1, "Keep Corners, Junctions"},
+        {FVarLinearInterpolation::CornersPlus2, "Keep Corners, Junctions, Concave"},
+        {FVarLinearInterpolation::Boundaries, "Keep Boundaries"},
+        {FVarLinearInterpolation::All, "None"}};
+    std::string help = std::string("How the file's UVs (vt) are kept linear at seams and corners, as OpenSubdiv's "
+                                   "FVarLinearInterpolation (default ") +
+                       toString(Options().fvarLinearInterpolation) + "); Blender's UV Smooth in brackets:";
+    for (FVarLinearInterpolation option : allFVarLinearInterpolations())
+        help += std::string("\n  ") + toString(option) + " (" + blender.at(option) + ")";
+    return help;
+}
+
 void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
     // The registered schemes (far/schemes.cpp), by name.
     static const std::map<std::string, Scheme> schemes = [] {
@@ -61,6 +79,16 @@ void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
            "--crease-method", [&args](const std::string& s) { args.creaseMethod = creaseMethods.at(s); },
            "Sharpness decay per level; overrides the file's creasemethod tag (default uniform)")
         ->check(oneOf(creaseMethods, "crease method"));
+    static const std::map<std::string, FVarLinearInterpolation> uvInterpolations = [] {
+        std::map<std::string, FVarLinearInterpolation> byName;
+        for (FVarLinearInterpolation option : allFVarLinearInterpolations()) byName.emplace(toString(option), option);
+        return byName;
+    }();
+    cmd.add_option_function<std::string>(
+           "--uv-interpolation", [&args](const std::string& s) { args.uvInterpolation = uvInterpolations.at(s); },
+           uvInterpolationHelp())
+        ->type_name("NAME")
+        ->check(oneOf(uvInterpolations, "UV interpolation"));
     cmd.add_flag("--smooth-triangles", args.smoothTriangles,
                  "OpenSubdiv's smooth-triangle rule (TRI_SUB_SMOOTH) for triangles; catmull-clark only "
                  "(default: the file's smoothtriangles tag)");

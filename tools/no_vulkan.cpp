@@ -10,7 +10,7 @@ struct VulkanTiming {};
 
 void VulkanTimingDeleter::operator()(VulkanTiming* timing) const { delete timing; }
 
-std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner&, int, const std::vector<float>&) {
+std::optional<std::vector<std::vector<float>>> evaluateLevelsOnVulkan(const std::vector<LevelData>&) {
     std::fprintf(stderr, "quadtri: built without Vulkan (QUADTRI_WITH_VULKAN=OFF); using the CPU evaluator\n");
     return std::nullopt;
 }

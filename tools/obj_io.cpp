@@ -420,7 +420,8 @@ ObjMesh readObj(const std::string& path) {
     return parseObj(in, path);
 }
 
-void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces, const float* normals) {
+void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces, const float* normals,
+              const ObjUVs& uvs) {
     char buf[128];
     auto writeTriples = [&](const char* tag, const float* data) {
         for (int v = 0; v < faces.numVertices(); ++v) {
@@ -430,13 +431,22 @@ void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces
         }
     };
     writeTriples("v", positions);
+    const bool withUVs = uvs.values != nullptr;
+    for (int i = 0; withUVs && i < uvs.numValues; ++i) {
+        const float* uv = uvs.values + 2 * size_t(i);
+        std::snprintf(buf, sizeof buf, "vt %.9g %.9g\n", double(uv[0]), double(uv[1]));
+        out << buf;
+    }
     if (normals) writeTriples("vn", normals);
     for (int f = 0; f < faces.numFaces(); ++f) {
         if (faces.isHole(f)) continue;
         out << 'f';
+        int corner = faces.offsets()[f];
         for (int v : faces.verticesOfFace(f)) {
             out << ' ' << v + 1;
-            if (normals) out << "//" << v + 1;
+            if (withUVs) out << '/' << uvs.cornerValues[corner] + 1;
+            if (normals) out << (withUVs ? "/" : "//") << v + 1;
+            ++corner;
         }
         out << '\n';
     }
@@ -502,8 +512,9 @@ void writeReplacing(const std::string& path, const std::function<void(std::ostre
     }
 }
 
-void writeObj(const std::string& path, const float* positions, const LevelFaces& faces, const float* normals) {
-    writeReplacing(path, [&](std::ostream& out) { writeObj(out, positions, faces, normals); });
+void writeObj(const std::string& path, const float* positions, const LevelFaces& faces, const float* normals,
+              const ObjUVs& uvs) {
+    writeReplacing(path, [&](std::ostream& out) { writeObj(out, positions, faces, normals, uvs); });
 }
 
 }  // namespace quadtri::io

@@ -69,12 +69,22 @@ struct ObjMesh {
 ObjMesh parseObj(std::istream& in, const std::string& name);
 ObjMesh readObj(const std::string& path);  // ObjError if the file cannot be opened
 
+// Texture coordinates to write with a level: `numValues` values of 2 floats, and per corner of
+// the level's faces (LevelFaces::vertices() order) its value index.
+struct ObjUVs {
+    const float* values = nullptr;
+    int numValues = 0;
+    const int* cornerValues = nullptr;
+};
+
 // Writes positions (3 floats each, %.9g) and the non-hole faces, 1-based. With `normals` (3
-// floats per vertex), also one `vn` per vertex and faces as `f v//v`.
-void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces, const float* normals = nullptr);
+// floats per vertex), also one `vn` per vertex and faces as `f v//v`. With `uvs` (values set),
+// also one `vt` per value (%.9g) and corners as `f v/vt` (`f v/vt/v` with normals).
+void writeObj(std::ostream& out, const float* positions, const LevelFaces& faces, const float* normals = nullptr,
+              const ObjUVs& uvs = {});
 // The same into the file `path`, through writeReplacing.
 void writeObj(const std::string& path, const float* positions, const LevelFaces& faces,
-              const float* normals = nullptr);
+              const float* normals = nullptr, const ObjUVs& uvs = {});
 
 // Writes `path` through `write` into a temporary file beside it and renames that over `path` once
 // every byte is written and the file is closed, so that a failure or a kill leaves any old

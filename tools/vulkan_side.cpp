@@ -19,26 +19,33 @@ struct VulkanTiming {
 
 void VulkanTimingDeleter::operator()(VulkanTiming* timing) const { delete timing; }
 
-// Levels 1..level in one Vulkan buffer, one dispatch per level; the last level read back.
-std::optional<std::vector<float>> evaluateLevelsOnVulkan(const Refiner& refiner, int level,
-                                                         const std::vector<float>& control) {
+// Each item's levels in one Vulkan buffer, one dispatch per level; its last level read back.
+std::optional<std::vector<std::vector<float>>> evaluateLevelsOnVulkan(const std::vector<LevelData>& data) {
     try {
-        const BufferDescriptor d(0, 3, 3);
         VulkanContext ctx;
-        std::vector<VulkanStencilTable> tables;
-        tables.reserve(std::size_t(level));
-        for (int L = 1; L <= level; ++L) tables.emplace_back(ctx, refiner.levelStencils(L));
-        std::vector<const VulkanStencilTable*> pointers;
-        for (const VulkanStencilTable& t : tables) pointers.push_back(&t);
-        const std::vector<int> first = VulkanEvaluator::levelFirstElements(pointers);
-        VulkanVertexBuffer all = VulkanVertexBuffer::create(ctx, first.back(), 3);
-        all.updateData(control.data(), 0, refiner.faces(0).numVertices());
         VulkanEvaluator evaluator(ctx);
-        evaluator.EvalLevelsAndWait(all, d, pointers);
-        std::vector<float> everything(std::size_t(first.back()) * 3);
-        all.readBack(everything.data());
+        std::vector<std::vector<float>> refined;
+        for (const LevelData& item : data) {
+            if (item.tables.empty()) {
+                refined.push_back(*item.control);
+                continue;
+            }
+            const BufferDescriptor d(0, item.width, item.width);
+            std::vector<VulkanStencilTable> tables;
+            tables.reserve(item.tables.size());
+            for (const StencilTable* table : item.tables) tables.emplace_back(ctx, *table);
+            std::vector<const VulkanStencilTable*> pointers;
+            for (const VulkanStencilTable& t : tables) pointers.push_back(&t);
+            const std::vector<int> first = VulkanEvaluator::levelFirstElements(pointers);
+            VulkanVertexBuffer all = VulkanVertexBuffer::create(ctx, first.back(), item.width);
+            all.updateData(item.control->data(), 0, int(item.control->size()) / item.width);
+            evaluator.EvalLevelsAndWait(all, d, pointers);
+            std::vector<float> everything(std::size_t(first.back()) * std::size_t(item.width));
+            all.readBack(everything.data());
+            refined.emplace_back(everything.begin() + std::ptrdiff_t(item.width) * first[pointers.size()], everything.end());
+        }
         std::fprintf(stderr, "quadtri: evaluated on Vulkan device %s\n", ctx.deviceName().c_str());
-        return std::vector<float>(everything.begin() + 3 * std::ptrdiff_t(first[std::size_t(level)]), everything.end());
+        return refined;
     } catch (const VulkanError& e) {
         std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); using the CPU evaluator\n", e.what());
         return std::nullopt;
