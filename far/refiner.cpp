@@ -230,7 +230,7 @@ StencilTableD composeFVarLevels(const FVarChannelRefinement& channel, int L, Com
         [&](int l) { return doubleBytes(channel.levelStencils(l)); });
 }
 
-// A limit table (limit()) composed with the tables below it (levels()), rounded to float, each
+// A limit table (limitOf()) composed with the tables below it (levelsOf()), rounded to float, each
 // made and freed within `budget`.
 template <class Limit, class Levels>
 LimitStencilTable composeLimitWithin(CompositionBudget& budget, Limit limitOf, Levels levelsOf) {
