@@ -206,6 +206,49 @@ LimitStencilTableD limitStencilsOf(const Refiner& refiner, int L, CompositionBud
     return table;
 }
 
+// Level L's limit stencils of a face-varying channel in double, what they allocate reserved in
+// `budget`: the value mesh copied with its limit sharpness, the table (twice at level 0, where it
+// is re-expressed over the channel's own values).
+LimitStencilTableD fvarLimitStencilsOf(const FVarChannelRefinement& channel, int L, const Options& options,
+                                       CompositionBudget& budget) {
+    const std::size_t copy = channel.valueMeshBytes(L);
+    budget.reserve(copy);
+    const Topology mesh = channel.limitMesh(L, options);
+    const std::size_t bound = (L == 0 ? 2 : 1) * (limitEntryBound(mesh) * (sizeof(int) + 3 * sizeof(double)) +
+                                                  std::size_t(mesh.numVertices) * 2 * sizeof(int));
+    budget.reserve(bound);
+    LimitStencilTableD table = channel.limitStencils(L, mesh, options);
+    budget.release(copy + bound);
+    budget.reserve(bytesOf(table));
+    return table;
+}
+
+// A channel's per-level tables of levels 1..L composed in double, over its own values.
+StencilTableD composeFVarLevels(const FVarChannelRefinement& channel, int L, CompositionBudget& budget) {
+    return composeLevelTables(
+        L, budget, [&](int l) { return toDoubleTable(channel.levelStencils(l)); },
+        [&](int l) { return doubleBytes(channel.levelStencils(l)); });
+}
+
+// A limit table (limitOf()) composed with the tables below it (levelsOf()), rounded to float, each
+// made and freed within `budget`.
+template <class Limit, class Levels>
+LimitStencilTable composeLimitWithin(CompositionBudget& budget, Limit limitOf, Levels levelsOf) {
+    LimitStencilTableD composed;
+    {
+        const LimitStencilTableD limit = limitOf();
+        const StencilTableD levels = levelsOf();
+        try {
+            composed = composeLimitStencils(limit, levels, budget.left());
+        } catch (const std::length_error&) {
+            throw budget.refuse(budget.budget() + 1);
+        }
+        budget.release(bytesOf(limit) + bytesOf(levels));  // both freed at the end of this block
+    }
+    budget.reserve(bytesOf(composed) + floatLimitBytes(composed.sizes.size(), composed.indices.size()));
+    return toFloatTable(composed);
+}
+
 }  // namespace
 
 StencilTable Refiner::factorizedStencils(int L) const {
@@ -281,20 +324,17 @@ StencilTable Refiner::fvarFactorizedStencils(int c, int L) const {
     CompositionBudget budget("the factorized stencils of face-varying channel " + std::to_string(c) + " at level " +
                                  std::to_string(L),
                              bytes(), options_.memoryBudgetBytes);
-    return toFloatWithin(composeLevelTables(
-                             L, budget, [&](int l) { return toDoubleTable(ch.levelStencils(l)); },
-                             [&](int l) { return doubleBytes(ch.levelStencils(l)); }),
-                         budget);
+    return toFloatWithin(composeFVarLevels(ch, L, budget), budget);
 }
 
-void Refiner::checkLimitLevel(int L) const {
+void Refiner::checkLimitLevel(const char* what, int L) const {
     if (L < 0 || L > maxLevel())
-        throw TopologyError("limit stencils asked for level " + std::to_string(L) + "; refined levels are 0.." +
+        throw TopologyError(std::string(what) + " asked for level " + std::to_string(L) + "; refined levels are 0.." +
                             std::to_string(maxLevel()));
 }
 
 LimitStencilTable Refiner::limitStencils(int L) const {
-    checkLimitLevel(L);
+    checkLimitLevel("limit stencils", L);
     CompositionBudget budget("the limit stencils of level " + std::to_string(L), bytes(), options_.memoryBudgetBytes);
     const LimitStencilTableD table = limitStencilsOf(*this, L, budget);
     budget.reserve(floatLimitBytes(table.sizes.size(), table.indices.size()));
@@ -302,23 +342,35 @@ LimitStencilTable Refiner::limitStencils(int L) const {
 }
 
 LimitStencilTable Refiner::factorizedLimitStencils(int L) const {
-    checkLimitLevel(L);
+    checkLimitLevel("limit stencils", L);
     if (L == 0) return limitStencils(0);
     CompositionBudget budget("the factorized limit stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
-    LimitStencilTableD composed;
-    {
-        const LimitStencilTableD limit = limitStencilsOf(*this, L, budget);
-        const StencilTableD levels = composeLevels(*this, L, budget);
-        try {
-            composed = composeLimitStencils(limit, levels, budget.left());
-        } catch (const std::length_error&) {
-            throw budget.refuse(budget.budget() + 1);
-        }
-        budget.release(bytesOf(limit) + bytesOf(levels));  // both freed at the end of this block
-    }
-    budget.reserve(bytesOf(composed) + floatLimitBytes(composed.sizes.size(), composed.indices.size()));
-    return toFloatTable(composed);
+    return composeLimitWithin(
+        budget, [&] { return limitStencilsOf(*this, L, budget); }, [&] { return composeLevels(*this, L, budget); });
+}
+
+LimitStencilTable Refiner::fvarLimitStencils(int c, int L) const {
+    const FVarChannelRefinement& ch = channel(c);
+    checkLimitLevel("face-varying limit stencils", L);
+    CompositionBudget budget("the limit stencils of face-varying channel " + std::to_string(c) + " at level " +
+                                 std::to_string(L),
+                             bytes(), options_.memoryBudgetBytes);
+    const LimitStencilTableD table = fvarLimitStencilsOf(ch, L, options_, budget);
+    budget.reserve(floatLimitBytes(table.sizes.size(), table.indices.size()));
+    return toFloatTable(table);
+}
+
+LimitStencilTable Refiner::fvarFactorizedLimitStencils(int c, int L) const {
+    const FVarChannelRefinement& ch = channel(c);
+    checkLimitLevel("face-varying limit stencils", L);
+    if (L == 0) return fvarLimitStencils(c, 0);
+    CompositionBudget budget("the factorized limit stencils of face-varying channel " + std::to_string(c) +
+                                 " at level " + std::to_string(L),
+                             bytes(), options_.memoryBudgetBytes);
+    return composeLimitWithin(
+        budget, [&] { return fvarLimitStencilsOf(ch, L, options_, budget); },
+        [&] { return composeFVarLevels(ch, L, budget); });
 }
 
 }  // namespace v0

@@ -105,6 +105,18 @@ public:
     // memory budget kept as in factorizedStencils.
     StencilTable fvarFactorizedStencils(int channel, int L) const;
 
+    // Limit stencils of channel c's values of level L (0 <= L <= maxLevel()) over level L's values
+    // (the channel's own at L = 0): one stencil per value, in value order, the limit UV and two
+    // tangents, as limitStencils gives them for positions (docs/face_varying.md, "Limit UVs").
+    // The limit UVs are OpenSubdiv's LimitFaceVarying: a value that matches its vertex takes the
+    // vertex's limit mask, any other the corner or the crease (seam) mask its value tag says.
+    // Throws TopologyError for a channel or level out of range, MemoryBudgetError as
+    // limitStencils does.
+    LimitStencilTable fvarLimitStencils(int channel, int L) const;
+    // The same over the channel's own values: fvarLimitStencils(c, L) composed with the channel's
+    // per-level tables in double, the budget kept as in factorizedLimitStencils.
+    LimitStencilTable fvarFactorizedLimitStencils(int channel, int L) const;
+
     // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L
     // (a looser bound while level L-1 holds its faces only).
     std::size_t estimateLevelBytes(int L) const;
@@ -115,7 +127,7 @@ public:
 private:
     void checkRefinedLevel(const char* what, int L) const;  // TopologyError unless 1 <= L <= maxLevel()
     void completeLevel(int L);  // rebuilds a faces-only level in full
-    void checkLimitLevel(int L) const;
+    void checkLimitLevel(const char* what, int L) const;  // TopologyError unless 0 <= L <= maxLevel()
     const FVarChannelRefinement& channel(int c) const;
 
     Options options_;

@@ -193,14 +193,16 @@ OsdRefinement osdRefine(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInter
 
 namespace {
 
-struct UV {
-    float p[2];
-    void Clear(void* = nullptr) { p[0] = p[1] = 0.0f; }
-    void AddWithWeight(const UV& src, float weight) {
+template <class Real>
+struct UVOf {
+    Real p[2];
+    void Clear(void* = nullptr) { p[0] = p[1] = Real(0); }
+    void AddWithWeight(const UVOf& src, Real weight) {
         p[0] += weight * src.p[0];
         p[1] += weight * src.p[1];
     }
 };
+using UV = UVOf<float>;
 
 Sdc::Options::FVarLinearInterpolation sdcFVar(FVarLinearInterpolation fvar) {
     switch (fvar) {
@@ -216,8 +218,13 @@ Sdc::Options::FVarLinearInterpolation sdcFVar(FVarLinearInterpolation fvar) {
 
 }  // namespace
 
-OsdFaceVarying osdFaceVarying(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
-                              CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int maxLevel) {
+namespace {
+
+// OpenSubdiv's refiner of `mesh` with its UVs as face-varying channel 0, refined uniformly to
+// `maxLevel` (full topology in the last level, which the limit needs).
+std::unique_ptr<Far::TopologyRefiner> createFVarRefiner(const io::ObjMesh& mesh, OsdScheme scheme,
+                                                        BoundaryInterpolation boundary, CreaseMethod creaseMethod,
+                                                        FVarLinearInterpolation fvar, int maxLevel) {
     if (!mesh.hasUVs()) throw std::invalid_argument("osdFaceVarying: the mesh has no UVs");
     Sdc::Options sdcOptions;
     sdcOptions.SetVtxBoundaryInterpolation(sdcBoundary(boundary));
@@ -251,7 +258,32 @@ OsdFaceVarying osdFaceVarying(const io::ObjMesh& mesh, OsdScheme scheme, Boundar
     Far::TopologyRefiner::UniformOptions uniform(maxLevel);
     uniform.fullTopologyInLastLevel = true;
     refiner->RefineUniform(uniform);
+    return refiner;
+}
 
+// Level L's faces: their vertices and their values of channel 0, corner by corner.
+void faceCornersOf(const Far::TopologyLevel& level, std::vector<int>& offsets, std::vector<int>& verts,
+                   std::vector<int>& values) {
+    offsets.assign(1, 0);
+    verts.clear();
+    values.clear();
+    for (int f = 0; f < level.GetNumFaces(); ++f) {
+        Far::ConstIndexArray fv = level.GetFaceVertices(f);
+        Far::ConstIndexArray fu = level.GetFaceFVarValues(f, 0);
+        for (int k = 0; k < fv.size(); ++k) {
+            verts.push_back(fv[k]);
+            values.push_back(fu[k]);
+        }
+        offsets.push_back(int(verts.size()));
+    }
+}
+
+}  // namespace
+
+OsdFaceVarying osdFaceVarying(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                              CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int maxLevel) {
+    const std::unique_ptr<Far::TopologyRefiner> refiner =
+        createFVarRefiner(mesh, scheme, boundary, creaseMethod, fvar, maxLevel);
     OsdFaceVarying out;
     std::vector<Vertex> positions(mesh.numVertices());
     for (int v = 0; v < mesh.numVertices(); ++v)
@@ -277,16 +309,8 @@ OsdFaceVarying osdFaceVarying(const io::ObjMesh& mesh, OsdScheme scheme, Boundar
         std::vector<float> xyz, st;
         for (const Vertex& v : positions) xyz.insert(xyz.end(), v.p, v.p + 3);
         for (const UV& u : uvs) st.insert(st.end(), u.p, u.p + 2);
-        std::vector<int> offsets{0}, verts, values;
-        for (int f = 0; f < level.GetNumFaces(); ++f) {
-            Far::ConstIndexArray fv = level.GetFaceVertices(f);
-            Far::ConstIndexArray fu = level.GetFaceFVarValues(f, 0);
-            for (int k = 0; k < fv.size(); ++k) {
-                verts.push_back(fv[k]);
-                values.push_back(fu[k]);
-            }
-            offsets.push_back(int(verts.size()));
-        }
+        std::vector<int> offsets, verts, values;
+        faceCornersOf(level, offsets, verts, values);
         out.positions.push_back(std::move(xyz));
         out.uvs.push_back(std::move(st));
         out.faceOffsets.push_back(std::move(offsets));
@@ -397,6 +421,92 @@ OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolati
 OsdLimit osdLimitInFloat(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                          CreaseMethod creaseMethod, int level, bool smoothTriangles, bool leftHanded) {
     return limitIn<float>(mesh, scheme, boundary, creaseMethod, level, smoothTriangles, leftHanded);
+}
+
+namespace {
+
+// The channel of `mesh` renumbered in OpenSubdiv's order of level 0's vertex values: vertex by
+// vertex, each vertex's values in the order of its faces (a value at two vertices becomes two).
+io::ObjMesh inVertexValueOrder(const io::ObjMesh& mesh, const Far::TopologyLevel& level0) {
+    io::ObjMesh out = mesh;
+    out.uvs.clear();
+    std::vector<int> faceStart{0};
+    for (int size : mesh.faceSizes) faceStart.push_back(faceStart.back() + size);
+    for (int v = 0; v < level0.GetNumVertices(); ++v) {
+        const Far::ConstIndexArray faces = level0.GetVertexFaces(v);
+        const Far::ConstLocalIndexArray corners = level0.GetVertexFaceLocalIndices(v);
+        std::vector<std::pair<int, int>> renamed;  // (the channel's value, its vertex value)
+        for (int i = 0; i < faces.size(); ++i) {
+            const int corner = faceStart[std::size_t(faces[i])] + corners[i], value = mesh.faceUVs[std::size_t(corner)];
+            auto found = std::find_if(renamed.begin(), renamed.end(), [&](const auto& r) { return r.first == value; });
+            if (found == renamed.end()) {
+                renamed.emplace_back(value, int(out.uvs.size() / 2));
+                out.uvs.insert(out.uvs.end(), {mesh.uvs[2 * std::size_t(value)], mesh.uvs[2 * std::size_t(value) + 1]});
+                found = renamed.end() - 1;
+            }
+            out.faceUVs[std::size_t(corner)] = found->second;
+        }
+    }
+    return out;
+}
+
+// Positions and UVs of `mesh` refined by `refiner` (refined to `level`) in double, and
+// LimitFaceVarying of the last level.
+OsdFaceVaryingLimit limitFaceVarying(const io::ObjMesh& mesh, const Far::TopologyRefiner& refiner, int level) {
+    using Point = VertexOf<double>;
+    using UVd = UVOf<double>;
+    std::vector<Point> positions(mesh.numVertices());
+    for (int v = 0; v < mesh.numVertices(); ++v)
+        for (int c = 0; c < 3; ++c) positions[v].p[c] = mesh.positions[3 * size_t(v) + c];
+    std::vector<UVd> uvs(mesh.numUVs());
+    for (int i = 0; i < mesh.numUVs(); ++i)
+        for (int c = 0; c < 2; ++c) uvs[i].p[c] = mesh.uvs[2 * size_t(i) + c];
+    Far::PrimvarRefinerReal<double> primvar(refiner);
+    for (int L = 1; L <= level; ++L) {
+        const Far::TopologyLevel& refined = refiner.GetLevel(L);
+        std::vector<Point> nextPositions(refined.GetNumVertices());
+        std::vector<UVd> nextUVs(refined.GetNumFVarValues(0));
+        const Point* src = positions.data();
+        Point* dst = nextPositions.data();
+        primvar.Interpolate(L, src, dst);
+        const UVd* uvSrc = uvs.data();
+        UVd* uvDst = nextUVs.data();
+        primvar.InterpolateFaceVarying(L, uvSrc, uvDst, 0);
+        positions = std::move(nextPositions);
+        uvs = std::move(nextUVs);
+    }
+    std::vector<UVd> limit(uvs.size());
+    const UVd* uvSrc = uvs.data();
+    UVd* limitDst = limit.data();
+    primvar.LimitFaceVarying(uvSrc, limitDst, 0);
+
+    OsdFaceVaryingLimit out;
+    for (const Point& p : positions)
+        for (int c = 0; c < 3; ++c) out.positions.push_back(float(p.p[c]));
+    for (std::size_t i = 0; i < uvs.size(); ++i)
+        for (int c = 0; c < 2; ++c) {
+            out.uvs.push_back(uvs[i].p[c]);
+            out.limit.push_back(limit[i].p[c]);
+        }
+    faceCornersOf(refiner.GetLevel(level), out.faceOffsets, out.faceVerts, out.faceValues);
+    return out;
+}
+
+}  // namespace
+
+OsdFaceVaryingLimit osdFaceVaryingLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                                        CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int level) {
+    if (level < 0) throw std::invalid_argument("osdFaceVaryingLimit: negative level");
+    std::unique_ptr<Far::TopologyRefiner> refiner = createFVarRefiner(mesh, scheme, boundary, creaseMethod, fvar, level);
+    if (level == 0) {
+        // Level 0's value tags are numbered per vertex value (its siblings, vertex by vertex), but
+        // LimitFaceVarying looks them up by the channel's value index: read in that numbering, the
+        // channel is what every refined level is (one value per vertex and sibling).
+        const io::ObjMesh renumbered = inVertexValueOrder(mesh, refiner->GetLevel(0));
+        refiner = createFVarRefiner(renumbered, scheme, boundary, creaseMethod, fvar, 0);
+        return limitFaceVarying(renumbered, *refiner, 0);
+    }
+    return limitFaceVarying(mesh, *refiner, level);
 }
 
 namespace {

@@ -97,6 +97,18 @@ struct OsdFaceVarying {
 OsdFaceVarying osdFaceVarying(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                               CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int maxLevel);
 
+// OpenSubdiv's limit of the mesh's UVs at one level: refined to `level` as osdFaceVarying does
+// but in double (PrimvarRefinerReal<double>: Interpolate, InterpolateFaceVarying), then
+// LimitFaceVarying there.
+struct OsdFaceVaryingLimit {
+    std::vector<float> positions;                  // the level's vertices, 3 floats each
+    std::vector<int> faceOffsets, faceVerts, faceValues;  // the level's faces, as in OsdFaceVarying
+    std::vector<double> uvs;                       // the level's refined UVs, 2 per value
+    std::vector<double> limit;                     // their limits, 2 per value
+};
+OsdFaceVaryingLimit osdFaceVaryingLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                                        CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int level);
+
 // Result of matching each vertex of `ours` to a distinct vertex of `reference` by position.
 struct PositionMatch {
     int numOurs = 0;

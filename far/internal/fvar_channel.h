@@ -13,6 +13,7 @@
 #include <quadtri/far/options.h>
 #include <quadtri/far/stencil_table.h>
 #include <quadtri/far/topology.h>
+#include "far/internal/limit_table.h"
 #include "far/internal/refine_topology.h"
 
 namespace quadtri {
@@ -50,6 +51,17 @@ public:
     // Level L's values over level L - 1's (L >= 1; level 1 over the channel's own values).
     const StencilTable& levelStencils(int L) const { return tables_.at(L - 1); }
     std::size_t bytes() const;
+    // Bytes of level L's value mesh (what limitMesh copies).
+    std::size_t valueMeshBytes(int L) const { return bytesOf(levels_.at(L).values); }
+
+    // Limit stencils (far/fvar_limit.cpp, docs/face_varying.md "Limit UVs"). limitMesh(L) is level
+    // L's value mesh with the sharpness OpenSubdiv's limit reads from the value tags: every value
+    // kept as a corner there (corners, semi-sharp and dependent values) infinitely sharp, creases
+    // not sharp. limitStencils builds the value mesh's limit masks on it, one stencil per value of
+    // level L, over level L's values (the channel's own at L = 0).
+    Topology limitMesh(int L, const Options& options) const;
+    LimitStencilTableD limitStencils(int L, const Topology& limitMesh, const Options& options) const;
+
     // What refining the last level once more would allocate at least (SchemeRules'
     // estimate over the value mesh).
     std::size_t estimateNextLevelBytes(const SchemeRules& rules) const;
