@@ -208,4 +208,15 @@ std::vector<int> referenceValueOfCorners(const LevelFaces& faces, const std::vec
     return out;
 }
 
+std::vector<float> applyTable(const StencilTable& table, const std::vector<float>& src, int width) {
+    std::vector<float> dst(std::size_t(table.numStencils()) * width, 0.0f);
+    for (int i = 0; i < table.numStencils(); ++i) {
+        const float* w = table.weightsOf(i);
+        for (int k = 0; k < table.size(i); ++k)
+            for (int c = 0; c < width; ++c)
+                dst[std::size_t(i) * width + c] += w[k] * src[std::size_t(table.indices[table.offsets[i] + k]) * width + c];
+    }
+    return dst;
+}
+
 }  // namespace quadtri::test

@@ -13,6 +13,7 @@
 
 #include <quadtri/far/level_faces.h>
 #include <quadtri/far/options.h>
+#include <quadtri/far/stencil_table.h>
 #include "tests/osd_reference.h"
 #include "tools/obj_io.h"
 
@@ -36,6 +37,9 @@ std::string caseName(const testing::TestParamInfo<FVarCase>& info);
 // The case's mesh (its UVs replaced as the case asks) and options (the file's tags applied).
 io::ObjMesh meshOf(const FVarCase& c);
 Options optionsOf(const FVarCase& c, const io::ObjMesh& mesh);
+
+// `width`-float data of level L from level L - 1's through one table (a plain loop in float).
+std::vector<float> applyTable(const StencilTable& table, const std::vector<float>& src, int width);
 
 // The UV range tolerances are relative to: the larger of the UVs' extent and magnitude.
 double rangeOf(const std::vector<float>& uvs);

@@ -18,20 +18,6 @@
 namespace quadtri::test {
 namespace {
 
-// `width`-float values of level L from the control values, through the per-level tables of
-// channel c (CpuEvaluator, as a renderer would run them).
-std::vector<std::vector<float>> evaluateChannel(const Refiner& refiner, int c, const std::vector<float>& control,
-                                                int width) {
-    std::vector<std::vector<float>> levels{control};
-    for (int L = 1; L <= refiner.maxLevel(); ++L) {
-        const StencilTable& table = refiner.fvarLevelStencils(c, L);
-        std::vector<float> out(std::size_t(table.numStencils()) * width);
-        CpuEvaluator::EvalStencils(levels.back().data(), BufferDescriptor(0, width, width), out.data(),
-                                   BufferDescriptor(0, width, width), table);
-        levels.push_back(std::move(out));
-    }
-    return levels;
-}
 
 std::vector<Scheme> schemesFor(const io::ObjMesh& mesh) {
     const bool triangles = std::all_of(mesh.faceSizes.begin(), mesh.faceSizes.end(), [](int n) { return n == 3; });
@@ -79,7 +65,7 @@ TEST(FVar, LinearMapOfThePositionsIsReproducedWithoutSeams) {
                 Refiner refiner(desc, options);
                 refiner.refineUniform(3);
                 const auto positions = evaluateLevels(refiner, mesh.positions, 3);
-                const auto uvs = evaluateChannel(refiner, 0, control, 2);
+                const auto uvs = evaluateChannelLevels(refiner, 0, control, 2);
                 double worst = 0, scale = 1;
                 for (float x : control) scale = std::max(scale, double(std::fabs(x)));
                 for (int L = 1; L <= 3; ++L) {
@@ -116,7 +102,7 @@ TEST(FVar, TablesArePartitionsOfUnityAndFactorizeExactly) {
                 Refiner refiner(mesh.descriptor(channel), mesh.applyTags(options));
                 refiner.refineUniform(3);
                 EXPECT_EQ(refiner.numFVarValues(0, 0), mesh.numUVs());
-                const auto uvs = evaluateChannel(refiner, 0, mesh.uvs, 2);
+                const auto uvs = evaluateChannelLevels(refiner, 0, mesh.uvs, 2);
                 for (int L = 1; L <= 3; ++L) {
                     const StencilTable& table = refiner.fvarLevelStencils(0, L);
                     ASSERT_EQ(table.numStencils(), refiner.numFVarValues(0, L));
@@ -344,7 +330,7 @@ TEST(FVar, ObjUVsBecomeChannelZero) {
     Refiner refiner(mesh.descriptor(channel), Options());
     ASSERT_EQ(refiner.numFVarChannels(), 1);
     refiner.refineUniform(1);
-    const auto uvs = evaluateChannel(refiner, 0, mesh.uvs, 2);
+    const auto uvs = evaluateChannelLevels(refiner, 0, mesh.uvs, 2);
     // A lone quad: its UV square's corners stay (corner values are sharp under CornersPlus1) and
     // its middle is the centre.
     const LevelFaces faces = refiner.faces(1);

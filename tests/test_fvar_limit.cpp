@@ -20,20 +20,6 @@ namespace {
 constexpr int kMaxLevel = 3;
 constexpr int kSeamLevels = 2;  // every option and scheme on seamed shapes: two levels compose
 
-// `width`-float values of every level from the control values through channel c's per-level
-// tables.
-std::vector<std::vector<float>> evaluateChannel(const Refiner& refiner, int c, const std::vector<float>& control,
-                                                int width) {
-    std::vector<std::vector<float>> levels{control};
-    for (int L = 1; L <= refiner.maxLevel(); ++L) {
-        const StencilTable& table = refiner.fvarLevelStencils(c, L);
-        std::vector<float> out(std::size_t(table.numStencils()) * width);
-        CpuEvaluator::EvalStencils(levels.back().data(), BufferDescriptor(0, width, width), out.data(),
-                                   BufferDescriptor(0, width, width), table);
-        levels.push_back(std::move(out));
-    }
-    return levels;
-}
 
 // One of a limit table's three outputs (0 position, 1 dU, 2 dV) of `width`-float data, in double.
 std::vector<double> limitOutput(const LimitStencilTable& table, const std::vector<float>& src, int width, int output) {
@@ -106,7 +92,7 @@ TEST_P(FVarLimitWithoutSeams, LinearMapOfTheLimit) {
             Refiner refiner(desc, options);
             refiner.refineUniform(kMaxLevel);
             const auto positions = evaluateLevels(refiner, mesh.positions, 3);
-            const auto uvs = evaluateChannel(refiner, 0, control, 2);
+            const auto uvs = evaluateChannelLevels(refiner, 0, control, 2);
             for (int L = 0; L <= kMaxLevel; ++L) {
                 const LimitStencilTable meshLimit = refiner.limitStencils(L);
                 const LimitStencilTable uvLimit = refiner.fvarLimitStencils(0, L);
@@ -150,7 +136,7 @@ TEST_P(FVarLimitWithSeams, PartitionOfUnityAndFactorization) {
             FVarChannel channel;
             Refiner refiner(mesh.descriptor(channel), mesh.applyTags(options));
             refiner.refineUniform(kSeamLevels);
-            const auto uvs = evaluateChannel(refiner, 0, mesh.uvs, 2);
+            const auto uvs = evaluateChannelLevels(refiner, 0, mesh.uvs, 2);
             for (int L = 0; L <= kSeamLevels; ++L) {
                 const LimitStencilTable table = refiner.fvarLimitStencils(0, L);
                 const LimitStencilTable factorized = refiner.fvarFactorizedLimitStencils(0, L);

@@ -24,17 +24,6 @@ constexpr int kMaxLevel = 3;
 constexpr double kUVTolerance = 1e-6;
 constexpr double kPositionTolerance = 1e-5;  // relative to the control mesh's diagonal
 
-// `width`-float data of level L from level L - 1's through one table.
-std::vector<float> apply(const StencilTable& table, const std::vector<float>& src, int width) {
-    std::vector<float> dst(std::size_t(table.numStencils()) * width, 0.0f);
-    for (int i = 0; i < table.numStencils(); ++i) {
-        const float* w = table.weightsOf(i);
-        for (int k = 0; k < table.size(i); ++k)
-            for (int c = 0; c < width; ++c)
-                dst[std::size_t(i) * width + c] += w[k] * src[std::size_t(table.indices[table.offsets[i] + k]) * width + c];
-    }
-    return dst;
-}
 
 // The limit positions of 2-float data, in double.
 std::vector<double> limitOf(const LimitStencilTable& table, const std::vector<float>& src) {
@@ -64,8 +53,8 @@ double expectLimitsAgree(const io::ObjMesh& mesh, const Options& options, OsdSch
         SCOPED_TRACE("level " + std::to_string(L));
         refiner.refineUniform(L);
         if (L > 0) {
-            positions = apply(refiner.levelStencils(L), positions, 3);
-            uvs = apply(refiner.fvarLevelStencils(0, L), uvs, 2);
+            positions = applyTable(refiner.levelStencils(L), positions, 3);
+            uvs = applyTable(refiner.fvarLevelStencils(0, L), uvs, 2);
         }
         tables.push_back(refiner.fvarLimitStencils(0, L));
         const LimitStencilTable& table = tables.back();

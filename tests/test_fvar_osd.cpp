@@ -27,17 +27,6 @@ constexpr int kMaxLevel = 3;
 constexpr double kUVTolerance = 1e-6;
 constexpr double kPositionTolerance = 1e-5;  // relative to the control mesh's diagonal
 
-// `width`-float data of level L from level L - 1's through one table.
-std::vector<float> apply(const StencilTable& table, const std::vector<float>& src, int width) {
-    std::vector<float> dst(std::size_t(table.numStencils()) * width, 0.0f);
-    for (int i = 0; i < table.numStencils(); ++i) {
-        const float* w = table.weightsOf(i);
-        for (int k = 0; k < table.size(i); ++k)
-            for (int c = 0; c < width; ++c)
-                dst[std::size_t(i) * width + c] += w[k] * src[std::size_t(table.indices[table.offsets[i] + k]) * width + c];
-    }
-    return dst;
-}
 
 class FVarAgreement : public testing::TestWithParam<FVarCase> {};
 
@@ -59,8 +48,8 @@ TEST_P(FVarAgreement, RefinedUVsEqualOpenSubdivCornerByCorner) {
     double worst = 0;
     for (int L = 1; L <= kMaxLevel; ++L) {
         SCOPED_TRACE("level " + std::to_string(L));
-        positions = apply(refiner.levelStencils(L), positions, 3);
-        uvs = apply(refiner.fvarLevelStencils(0, L), uvs, 2);
+        positions = applyTable(refiner.levelStencils(L), positions, 3);
+        uvs = applyTable(refiner.fvarLevelStencils(0, L), uvs, 2);
         ASSERT_EQ(int(uvs.size() / 2), refiner.numFVarValues(0, L));
         const LevelFaces faces = refiner.faces(L);
         ASSERT_EQ(faces.numFaces(), int(osd.faceOffsets[L].size()) - 1);

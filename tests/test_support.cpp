@@ -28,16 +28,33 @@ RefinedMesh refineMesh(const std::string& relative, int maxLevel, Options option
     return r;
 }
 
-std::vector<std::vector<float>> evaluateLevels(const Refiner& refiner, const std::vector<float>& control, int width) {
+namespace {
+
+// `control` carried through tableOf(1 .. maxLevel()) with CpuEvaluator, every level kept.
+template <class TableOf>
+std::vector<std::vector<float>> evaluateThrough(const Refiner& refiner, const std::vector<float>& control, int width,
+                                                const TableOf& tableOf) {
     std::vector<std::vector<float>> levels{control};
     for (int L = 1; L <= refiner.maxLevel(); ++L) {
-        const StencilTable& table = refiner.levelStencils(L);
+        const StencilTable& table = tableOf(L);
         std::vector<float> out(size_t(table.numStencils()) * width);
         CpuEvaluator::EvalStencils(levels.back().data(), BufferDescriptor(0, width, width), out.data(),
                                    BufferDescriptor(0, width, width), table);
         levels.push_back(std::move(out));
     }
     return levels;
+}
+
+}  // namespace
+
+std::vector<std::vector<float>> evaluateLevels(const Refiner& refiner, const std::vector<float>& control, int width) {
+    return evaluateThrough(refiner, control, width, [&](int L) -> const StencilTable& { return refiner.levelStencils(L); });
+}
+
+std::vector<std::vector<float>> evaluateChannelLevels(const Refiner& refiner, int channel,
+                                                      const std::vector<float>& control, int width) {
+    return evaluateThrough(refiner, control, width,
+                           [&](int L) -> const StencilTable& { return refiner.fvarLevelStencils(channel, L); });
 }
 
 double boundingBoxDiagonal(const std::vector<float>& xyz) {

@@ -26,6 +26,9 @@ RefinedMesh refineMesh(const std::string& relative, int maxLevel, Options option
 
 // Level-by-level evaluation of `width`-float data through the per-level tables.
 std::vector<std::vector<float>> evaluateLevels(const Refiner& refiner, const std::vector<float>& control, int width);
+// The same for face-varying channel `channel`'s values, through its per-level tables.
+std::vector<std::vector<float>> evaluateChannelLevels(const Refiner& refiner, int channel,
+                                                      const std::vector<float>& control, int width);
 
 double boundingBoxDiagonal(const std::vector<float>& xyz);
 
