@@ -88,18 +88,9 @@ Sdc::Options::CreasingMethod sdcCreasing(CreaseMethod method) {
 
 namespace {
 
-// OpenSubdiv's refiner of `mesh` (not yet refined): creases, corners and holes through the
-// Far::TopologyDescriptor, the Sdc options from the arguments.
-std::unique_ptr<Far::TopologyRefiner> createRefiner(const io::ObjMesh& mesh, OsdScheme scheme,
-                                                    BoundaryInterpolation boundary, CreaseMethod creaseMethod,
-                                                    bool smoothTriangles, bool leftHanded) {
-    Sdc::Options sdcOptions;
-    sdcOptions.SetVtxBoundaryInterpolation(sdcBoundary(boundary));
-    sdcOptions.SetCreasingMethod(sdcCreasing(creaseMethod));
-    sdcOptions.SetTriangleSubdivision(smoothTriangles ? Sdc::Options::TRI_SUB_SMOOTH : Sdc::Options::TRI_SUB_CATMARK);
-
-    using Descriptor = Far::TopologyDescriptor;
-    Descriptor desc;
+// `mesh`'s faces, creases, corners and holes as OpenSubdiv's descriptor (pointing into `mesh`).
+Far::TopologyDescriptor osdDescriptorOf(const io::ObjMesh& mesh) {
+    Far::TopologyDescriptor desc;
     desc.numVertices = mesh.numVertices();
     desc.numFaces = mesh.numFaces();
     desc.numVertsPerFace = mesh.faceSizes.data();
@@ -112,13 +103,32 @@ std::unique_ptr<Far::TopologyRefiner> createRefiner(const io::ObjMesh& mesh, Osd
     desc.cornerWeights = mesh.cornerSharpness.data();
     desc.numHoles = int(mesh.holes.size());
     desc.holeIndices = mesh.holes.data();
-    desc.isLeftHanded = leftHanded;
+    return desc;
+}
 
-    using Factory = Far::TopologyRefinerFactory<Descriptor>;
+// OpenSubdiv's refiner of `desc` (not yet refined); std::runtime_error if it refuses the topology.
+std::unique_ptr<Far::TopologyRefiner> refinerOf(const Far::TopologyDescriptor& desc, OsdScheme scheme,
+                                                const Sdc::Options& sdcOptions) {
+    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
     std::unique_ptr<Far::TopologyRefiner> refiner(
         Factory::Create(desc, Factory::Options(sdcScheme(scheme), sdcOptions)));
     if (!refiner) throw std::runtime_error("OpenSubdiv refused the topology (see its error output)");
     return refiner;
+}
+
+// OpenSubdiv's refiner of `mesh` (not yet refined): creases, corners and holes through the
+// Far::TopologyDescriptor, the Sdc options from the arguments.
+std::unique_ptr<Far::TopologyRefiner> createRefiner(const io::ObjMesh& mesh, OsdScheme scheme,
+                                                    BoundaryInterpolation boundary, CreaseMethod creaseMethod,
+                                                    bool smoothTriangles, bool leftHanded) {
+    Sdc::Options sdcOptions;
+    sdcOptions.SetVtxBoundaryInterpolation(sdcBoundary(boundary));
+    sdcOptions.SetCreasingMethod(sdcCreasing(creaseMethod));
+    sdcOptions.SetTriangleSubdivision(smoothTriangles ? Sdc::Options::TRI_SUB_SMOOTH : Sdc::Options::TRI_SUB_CATMARK);
+
+    Far::TopologyDescriptor desc = osdDescriptorOf(mesh);
+    desc.isLeftHanded = leftHanded;
+    return refinerOf(desc, scheme, sdcOptions);
 }
 
 }  // namespace
@@ -232,29 +242,14 @@ std::unique_ptr<Far::TopologyRefiner> createFVarRefiner(const io::ObjMesh& mesh,
     sdcOptions.SetFVarLinearInterpolation(sdcFVar(fvar));
 
     using Descriptor = Far::TopologyDescriptor;
-    Descriptor desc;
-    desc.numVertices = mesh.numVertices();
-    desc.numFaces = mesh.numFaces();
-    desc.numVertsPerFace = mesh.faceSizes.data();
-    desc.vertIndicesPerFace = mesh.faceVerts.data();
-    desc.numCreases = int(mesh.creaseSharpness.size());
-    desc.creaseVertexIndexPairs = mesh.creasePairs.data();
-    desc.creaseWeights = mesh.creaseSharpness.data();
-    desc.numCorners = int(mesh.cornerSharpness.size());
-    desc.cornerVertexIndices = mesh.corners.data();
-    desc.cornerWeights = mesh.cornerSharpness.data();
-    desc.numHoles = int(mesh.holes.size());
-    desc.holeIndices = mesh.holes.data();
+    Descriptor desc = osdDescriptorOf(mesh);
     Descriptor::FVarChannel channel;
     channel.numValues = mesh.numUVs();
     channel.valueIndices = mesh.faceUVs.data();
     desc.numFVarChannels = 1;
     desc.fvarChannels = &channel;
 
-    using Factory = Far::TopologyRefinerFactory<Descriptor>;
-    std::unique_ptr<Far::TopologyRefiner> refiner(
-        Factory::Create(desc, Factory::Options(sdcScheme(scheme), sdcOptions)));
-    if (!refiner) throw std::runtime_error("OpenSubdiv refused the topology (see its error output)");
+    std::unique_ptr<Far::TopologyRefiner> refiner = refinerOf(desc, scheme, sdcOptions);
     Far::TopologyRefiner::UniformOptions uniform(maxLevel);
     uniform.fullTopologyInLastLevel = true;
     refiner->RefineUniform(uniform);
