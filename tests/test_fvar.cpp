@@ -1,7 +1,8 @@
 // Face-varying channels: invariants of their tables under every scheme and option (a linear map
 // of the positions reproduced where the channel has no seam, partition of unity, factorized
 // tables equal to the per-level ones), a UV seam across the tri/quad seam of a mixed mesh, the
-// API's refusals of bad channels, and UVs read from OBJ files.
+// API's refusals of bad channels, faces that repeat a vertex (read as their loops, values too),
+// and UVs read from OBJ files.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -6,10 +6,11 @@
 // Far::PrimvarRefiner::InterpolateFaceVarying's, corner by corner. The two libraries number
 // refined vertices, faces and values differently, so faces are matched by the positions of their
 // corners (vertices matched by position first), then corners within the face by their vertex.
+// Collapsed edges (catmull-clark keeps them) put two corners on one position: there every corner
+// is compared as (position, UV) instead.
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -83,65 +84,13 @@ TEST_P(FVarAgreement, RefinedUVsEqualOpenSubdivCornerByCorner) {
 
 INSTANTIATE_TEST_SUITE_P(OsdShapes, FVarAgreement, testing::ValuesIn(fvarCases()), caseName);
 
-// Every corner of a level as (position, UV), 5 doubles.
-using CornerPoint = std::array<double, 5>;
-std::vector<CornerPoint> cornerPoints(const std::vector<int>& verts, const std::vector<int>& values,
-                                      const std::vector<float>& positions, const std::vector<float>& uvs) {
-    std::vector<CornerPoint> out;
-    for (std::size_t k = 0; k < verts.size(); ++k) {
-        const float* p = &positions[3 * std::size_t(verts[k])];
-        const float* t = &uvs[2 * std::size_t(values[k])];
-        out.push_back({p[0], p[1], p[2], t[0], t[1]});
-    }
-    return out;
-}
-
-// The largest distance from a point of `a` to its nearest in `b` (brute force: a few thousand).
-double farthestFromNearest(const std::vector<CornerPoint>& a, const std::vector<CornerPoint>& b) {
-    double worst = 0;
-    for (const CornerPoint& x : a) {
-        double nearest = 1e300;
-        for (const CornerPoint& y : b) {
-            double d = 0;
-            for (int i = 0; i < 5; ++i) d = std::max(d, std::fabs(x[std::size_t(i)] - y[std::size_t(i)]));
-            nearest = std::min(nearest, d);
-        }
-        worst = std::max(worst, nearest);
-    }
-    return worst;
-}
-
-// Collapsed edges (`4 3 5 5`, kept as they are under catmull-clark) with UVs, against OpenSubdiv:
-// a collapsed edge's corners with one value (UVs per vertex, the pole's planar projection, and a
-// 2 x 2 grid with one collapsed quad) and with two (a value per corner). A level's corners sit by
-// twos on one position there (the collapsed edge's point is its vertex's), so the position
-// matching of the shapes' cases cannot tell them apart: instead every corner as (position, UV)
-// must be one of OpenSubdiv's and the other way round, in equal numbers.
+// Collapsed edges (`4 3 5 5`, kept as they are under catmull-clark) with UVs against OpenSubdiv,
+// on collapsedEdgeMeshes (a collapsed edge's corners with one value and with two): every corner as
+// (position, UV) is one of OpenSubdiv's and the other way round, in equal numbers.
 TEST(FVarAgreementCollapsedEdges, CornersEqualOpenSubdivsAsPositionAndUV) {
-    io::ObjMesh pole = io::readObj(meshPath("osd/catmark_nonman_quadpole8.obj"));
-    io::ObjMesh grid;
-    grid.positions = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0.3f, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0};
-    grid.faceSizes = {4, 4, 4, 4};
-    grid.faceVerts = {0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 8};
-    for (int variant = 0; variant < 3; ++variant) {
-        io::ObjMesh mesh = variant == 2 ? grid : pole;
-        mesh.uvs.clear();
-        mesh.faceUVs.clear();
-        if (variant == 1) {  // a value per corner, each its vertex's projection moved a little
-            for (int v : mesh.faceVerts) {
-                mesh.faceUVs.push_back(mesh.numUVs());
-                mesh.uvs.push_back(mesh.positions[3 * std::size_t(v)] + 0.01f * float(mesh.faceUVs.size() % 5));
-                mesh.uvs.push_back(mesh.positions[3 * std::size_t(v) + 2] - 0.02f * float(mesh.faceUVs.size() % 3));
-            }
-        } else {  // a value per vertex: the planar projection
-            for (int v = 0; v < mesh.numVertices(); ++v) {
-                mesh.uvs.push_back(mesh.positions[3 * std::size_t(v)]);
-                mesh.uvs.push_back(mesh.positions[3 * std::size_t(v) + (variant == 2 ? 1 : 2)]);
-            }
-            mesh.faceUVs = mesh.faceVerts;
-        }
+    for (const io::ObjMesh& mesh : collapsedEdgeMeshes()) {
         for (FVarLinearInterpolation fvar : allFVarLinearInterpolations()) {
-            SCOPED_TRACE("variant " + std::to_string(variant) + " " + toString(fvar));
+            SCOPED_TRACE(mesh.name + " " + toString(fvar));
             Options options;
             options.scheme = Scheme::CatmullClark;
             options.fvarLinearInterpolation = fvar;
@@ -159,8 +108,9 @@ TEST(FVarAgreementCollapsedEdges, CornersEqualOpenSubdivsAsPositionAndUV) {
                 const IndexSpan values = refiner.fvarValues(0, L);
                 const std::vector<CornerPoint> ours =
                     cornerPoints({faces.vertices(), faces.vertices() + faces.numCorners()}, {values.begin(), values.end()},
-                                 positions, uvs);
-                const std::vector<CornerPoint> theirs = cornerPoints(osd.faceVerts[L], osd.faceValues[L], osd.positions[L], osd.uvs[L]);
+                                 positions, {uvs.begin(), uvs.end()});
+                const std::vector<CornerPoint> theirs = cornerPoints(osd.faceVerts[L], osd.faceValues[L], osd.positions[L],
+                                                                     {osd.uvs[L].begin(), osd.uvs[L].end()});
                 ASSERT_EQ(ours.size(), theirs.size());
                 EXPECT_LE(farthestFromNearest(ours, theirs), 1e-5);
                 EXPECT_LE(farthestFromNearest(theirs, ours), 1e-5);
