@@ -336,18 +336,24 @@ TEST(FVar, FacesThatRepeatAVertexTakeTheirLoopsValues) {
         TopologyDescriptor desc = descriptorOf(5, sizes, c.verts);
         desc.numFVarChannels = 1;
         desc.fvarChannels = &channel;
-        Options options;
-        options.scheme = c.scheme;
-        Refiner refiner(desc, options);
-        ASSERT_EQ(refiner.faces(0).numFaces(), int(c.faceValues.size()));
-        for (int f = 0; f < int(c.faceValues.size()); ++f) {
-            const IndexSpan got = refiner.fvarValuesOfFace(0, 0, f);
-            EXPECT_EQ(std::vector<int>(got.begin(), got.end()), c.faceValues[std::size_t(f)]) << "face " << f;
-        }
-        refiner.refineUniform(2);
-        for (int L = 1; L <= 2; ++L) {
-            const StencilTable& table = refiner.fvarLevelStencils(0, L);
-            for (int i = 0; i < table.numStencils(); ++i) EXPECT_NEAR(stencilWeightSum(table, i), 1.0, 1e-6);
+        for (bool leftHanded : {false, true}) {
+            Options options;
+            options.scheme = c.scheme;
+            options.leftHanded = leftHanded;
+            Refiner refiner(desc, options);
+            ASSERT_EQ(refiner.faces(0).numFaces(), int(c.faceValues.size()));
+            for (int f = 0; f < int(c.faceValues.size()); ++f) {
+                // Left-handed faces are stored with their first corner kept and the rest reversed.
+                std::vector<int> expected = c.faceValues[std::size_t(f)];
+                if (leftHanded) std::reverse(expected.begin() + 1, expected.end());
+                const IndexSpan got = refiner.fvarValuesOfFace(0, 0, f);
+                EXPECT_EQ(std::vector<int>(got.begin(), got.end()), expected) << "face " << f << (leftHanded ? " left-handed" : "");
+            }
+            refiner.refineUniform(2);
+            for (int L = 1; L <= 2; ++L) {
+                const StencilTable& table = refiner.fvarLevelStencils(0, L);
+                for (int i = 0; i < table.numStencils(); ++i) EXPECT_NEAR(stencilWeightSum(table, i), 1.0, 1e-6);
+            }
         }
     }
 }
