@@ -6,6 +6,7 @@
 #include <string>
 
 #include "far/internal/crease.h"
+#include "far/internal/face_loops.h"
 #include "far/internal/level_estimate.h"
 #include "far/internal/limit_ring.h"
 #include "far/internal/rules.h"
@@ -57,20 +58,19 @@ StencilTableD overControlValues(const StencilTableD& table, const std::vector<in
     return out;
 }
 
-// The sibling of each of vertex v's faces (in `faces`' order) as OpenSubdiv numbers them: a
+// The sibling of each of vertex v's corners (`corners`, in the order of its faces) as OpenSubdiv numbers them: a
 // face with the value of the face before it shares its sibling, any other value is looked up
 // among those met so far, except that the third distinct value met is compared with the first
 // only, so that at a vertex whose faces alternate A B A B the second B run becomes a sibling of
 // its own. Returns the number of siblings.
-int numberSiblings(const Topology& mesh, const std::vector<int>& cornerValues, int v, const std::vector<int>& faces,
-                   std::vector<int>& siblings, std::vector<int>& unique) {
-    const int n = int(faces.size());
+int numberSiblings(const std::vector<int>& cornerValues, const std::vector<int>& corners, std::vector<int>& siblings,
+                   std::vector<int>& unique) {
+    const int n = int(corners.size());
     siblings.assign(std::size_t(n), 0);
     unique.clear();
     int previous = -1;
     for (int i = 0; i < n; ++i) {
-        const int f = faces[std::size_t(i)];
-        const int value = cornerValues[std::size_t(mesh.faceOffsets[f] + mesh.cornerOfVertex(f, v))];
+        const int value = cornerValues[std::size_t(corners[std::size_t(i)])];
         if (i > 0 && value == previous) {
             siblings[std::size_t(i)] = siblings[std::size_t(i) - 1];
         } else if (unique.size() <= 1 || (unique.size() == 2 && unique[0] != value)) {
@@ -92,22 +92,21 @@ FVarChannelRefinement::FVarChannelRefinement(const TopologyDescriptor& desc, int
                                              const Options& options) {
     const FVarChannel& c = desc.fvarChannels[channel];
     numControlValues_ = c.numValues;
-    // The channel's faces must be the mesh's level-0 faces one to one: no repeated vertex.
-    std::vector<int> seenIn(std::size_t(desc.numVertices), -1);
+    // The channel's faces are the mesh's level-0 faces: the loops the descriptor's faces walk
+    // around (face_loops.h), each corner with the value of the input corner it comes from.
+    FaceLoopSplitter splitter(desc.numVertices, rulesOf(options.scheme).collapsedEdges());
+    std::vector<int> faceVerts, sizes, corners;
+    controlValues_.reserve(std::size_t(mesh.numFaceVertices()));
     const int* verts = desc.faceVertIndices;
+    const int* valueIndices = c.valueIndices;
     for (int f = 0; f < desc.numFaces; ++f) {
         const int n = desc.numVertsPerFace[f];
-        for (int i = 0; i < n; ++i) {
-            const int v = verts[i];
-            if (seenIn[std::size_t(v)] == f)
-                throw TopologyError({TopologyDiagnostic::Component::Face, f, v,
-                                     "appears more than once in the face; a face of a face-varying channel must "
-                                     "not repeat a vertex"});
-            seenIn[std::size_t(v)] = f;
-        }
+        corners.clear();
+        splitter.split(verts, n, faceVerts, sizes, &corners);
+        for (int k : corners) controlValues_.push_back(valueIndices[k]);
         verts += n;
+        valueIndices += n;
     }
-    controlValues_.assign(c.valueIndices, c.valueIndices + mesh.numFaceVertices());
     if (options.leftHanded) {  // as the mesh stores its faces: the first corner kept, the rest reversed
         for (int f = 0; f < mesh.numFaces(); ++f)
             std::reverse(controlValues_.begin() + mesh.faceOffsets[f] + 1, controlValues_.begin() + mesh.faceOffsets[f + 1]);
@@ -120,15 +119,22 @@ FVarChannelRefinement::FVarChannelRefinement(const TopologyDescriptor& desc, int
     values.faceOffsets = mesh.faceOffsets;
     values.faceVerts.assign(std::size_t(mesh.numFaceVertices()), -1);
     VertexRing ring;
-    std::vector<int> siblings, unique;
+    std::vector<int> ringCorners, siblings, unique;
     for (int v = 0; v < mesh.numVertices; ++v) {
         if (mesh.vertexFaceCount(v) == 0) continue;
         orderVertexRing(mesh, v, -1, ring);
-        const int count = numberSiblings(mesh, controlValues_, v, ring.faces, siblings, unique);
-        for (std::size_t i = 0; i < ring.faces.size(); ++i) {
-            const int f = ring.faces[i];
-            values.faceVerts[std::size_t(mesh.faceOffsets[f] + mesh.cornerOfVertex(f, v))] = values.numVertices + siblings[i];
+        // A face with a collapsed edge is in the ring once per corner at v: each time, its first
+        // corner at v not yet taken (marked -2 until numbered).
+        ringCorners.clear();
+        for (int f : ring.faces) {
+            int k = mesh.faceOffsets[f];
+            while (mesh.faceVerts[std::size_t(k)] != v || values.faceVerts[std::size_t(k)] != -1) ++k;
+            values.faceVerts[std::size_t(k)] = -2;
+            ringCorners.push_back(k);
         }
+        const int count = numberSiblings(controlValues_, ringCorners, siblings, unique);
+        for (std::size_t i = 0; i < ringCorners.size(); ++i)
+            values.faceVerts[std::size_t(ringCorners[i])] = values.numVertices + siblings[i];
         values.numVertices += count;
     }
     const int nc = mesh.numFaceVertices();

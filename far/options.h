@@ -95,9 +95,9 @@ struct TopologyDescriptor {
     int numHoles = 0;
     const int* holeIndices = nullptr;  // face indices
 
-    // Face-varying channels, refined with the mesh (Refiner::fvarLevelStencils). A face of a
-    // channel must not repeat a vertex: the Refiner refuses it rather than guess which corner's
-    // value a split or merged corner keeps.
+    // Face-varying channels, refined with the mesh (Refiner::fvarLevelStencils). A face that
+    // repeats a vertex is read as the mesh reads it, its loops, each corner with the value of the
+    // input corner it comes from (docs/face_varying.md).
     int numFVarChannels = 0;
     const FVarChannel* fvarChannels = nullptr;  // numFVarChannels
 };

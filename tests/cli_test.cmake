@@ -240,6 +240,17 @@ expect_contains("${ERR}" "warning: ${WORK}/repeated.obj:6: face 2: vertex 3 appe
 file(WRITE "${WORK}/collapsed.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 3 4\n")
 run(0 info "${WORK}/collapsed.obj")
 expect_contains("${OUT}" "3-gon 2")
+# With UVs, the corners follow the same loops (docs/face_varying.md): seamless UVs give one value
+# per vertex, 9 after the two triangles' split, 12 under catmull-clark (4 vertices, 2 face points,
+# 6 edge points: the collapsed edge 3-3 is one).
+file(WRITE "${WORK}/collapsed_uv.obj" "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                       "f 1/1 2/2 3/3\nf 1/1 3/3 3/3 4/4\n")
+run(0 refine "${WORK}/collapsed_uv.obj" --level 1 -o "${WORK}/collapsed_uv_1.obj")
+count_lines("${WORK}/collapsed_uv_1.obj" "vt " uvLines)
+expect_equal("collapsed quad with UVs: vt lines of level 1" "${uvLines}" 9)
+run(0 refine "${WORK}/collapsed_uv.obj" --level 1 --scheme catmull-clark -o "${WORK}/collapsed_uv_cc.obj")
+count_lines("${WORK}/collapsed_uv_cc.obj" "vt " uvLines)
+expect_equal("collapsed quad with UVs, catmull-clark: vt lines of level 1" "${uvLines}" 12)
 
 # A crease tag on two vertices that share no edge is warned about (naming the tag's line) and
 # ignored, as OpenSubdiv does.

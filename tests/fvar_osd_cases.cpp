@@ -219,4 +219,60 @@ std::vector<float> applyTable(const StencilTable& table, const std::vector<float
     return dst;
 }
 
+std::vector<io::ObjMesh> collapsedEdgeMeshes() {
+    const io::ObjMesh pole = io::readObj(meshPath("osd/catmark_nonman_quadpole8.obj"));
+    io::ObjMesh grid;
+    grid.name = "grid with a collapsed quad";
+    grid.positions = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0.3f, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0};
+    grid.faceSizes = {4, 4, 4, 4};
+    grid.faceVerts = {0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 8};
+    std::vector<io::ObjMesh> meshes{pole, pole, grid};
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+        io::ObjMesh& mesh = meshes[i];
+        mesh.uvs.clear();
+        mesh.faceUVs.clear();
+        const int down = i == 2 ? 1 : 2;  // the pole's axis is y, the grid's z
+        if (i == 1) {  // a value per corner: its vertex's projection moved a little
+            mesh.name += " per-corner UVs";
+            for (int v : mesh.faceVerts) {
+                mesh.faceUVs.push_back(mesh.numUVs());
+                mesh.uvs.push_back(mesh.positions[3 * std::size_t(v)] + 0.01f * float(mesh.faceUVs.size() % 5));
+                mesh.uvs.push_back(mesh.positions[3 * std::size_t(v) + down] - 0.02f * float(mesh.faceUVs.size() % 3));
+            }
+        } else {
+            for (int v = 0; v < mesh.numVertices(); ++v) {
+                mesh.uvs.push_back(mesh.positions[3 * std::size_t(v)]);
+                mesh.uvs.push_back(mesh.positions[3 * std::size_t(v) + down]);
+            }
+            mesh.faceUVs = mesh.faceVerts;
+        }
+    }
+    return meshes;
+}
+
+std::vector<CornerPoint> cornerPoints(const std::vector<int>& verts, const std::vector<int>& values,
+                                      const std::vector<float>& positions, const std::vector<double>& uvs) {
+    std::vector<CornerPoint> out;
+    for (std::size_t k = 0; k < verts.size(); ++k) {
+        const float* p = &positions[3 * std::size_t(verts[k])];
+        const double* t = &uvs[2 * std::size_t(values[k])];
+        out.push_back({p[0], p[1], p[2], t[0], t[1]});
+    }
+    return out;
+}
+
+double farthestFromNearest(const std::vector<CornerPoint>& a, const std::vector<CornerPoint>& b) {
+    double worst = 0;
+    for (const CornerPoint& x : a) {
+        double nearest = 1e300;
+        for (const CornerPoint& y : b) {
+            double d = 0;
+            for (std::size_t i = 0; i < x.size(); ++i) d = std::max(d, std::fabs(x[i] - y[i]));
+            nearest = std::min(nearest, d);
+        }
+        worst = std::max(worst, nearest);
+    }
+    return worst;
+}
+
 }  // namespace quadtri::test

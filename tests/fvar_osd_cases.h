@@ -5,6 +5,7 @@
 // matching of our level's corners to OpenSubdiv's (faces by their corners' matched vertices).
 #pragma once
 
+#include <array>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -52,5 +53,19 @@ std::vector<int> referenceValueOfCorners(const LevelFaces& faces, const std::vec
                                          const std::vector<int>& referenceOffsets,
                                          const std::vector<int>& referenceVerts,
                                          const std::vector<int>& referenceValues);
+
+// Collapsed edges (`4 3 5 5`) with UVs, for catmull-clark, which keeps them: catmark_nonman_quadpole8
+// with a value per vertex (the planar projection: the collapsed edges' corners share a value) and
+// with a value per corner (they differ), and a 2 x 2 grid with one collapsed quad and UVs per vertex.
+std::vector<io::ObjMesh> collapsedEdgeMeshes();
+
+// Every corner of a level as (position, UV). A collapsed edge's corners share a position, so
+// faces cannot be matched by their corners' positions there: these are compared as sets instead.
+using CornerPoint = std::array<double, 5>;
+std::vector<CornerPoint> cornerPoints(const std::vector<int>& verts, const std::vector<int>& values,
+                                      const std::vector<float>& positions, const std::vector<double>& uvs);
+// The largest distance (max norm) from a point of `a` to its nearest in `b` (brute force: for a
+// few thousand points).
+double farthestFromNearest(const std::vector<CornerPoint>& a, const std::vector<CornerPoint>& b);
 
 }  // namespace quadtri::test

@@ -1,7 +1,8 @@
 // Face-varying channels: invariants of their tables under every scheme and option (a linear map
 // of the positions reproduced where the channel has no seam, partition of unity, factorized
 // tables equal to the per-level ones), a UV seam across the tri/quad seam of a mixed mesh, the
-// API's refusals of bad channels, and UVs read from OBJ files.
+// API's refusals of bad channels, faces that repeat a vertex (read as their loops, values too),
+// and UVs read from OBJ files.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -303,21 +304,102 @@ TEST(FVar, BadChannelsAreRefused) {
     noArray.numFVarChannels = 1;
     EXPECT_THROW(Refiner(noArray, Options()), TopologyError);
 
-    // A face that repeats a vertex is refused in a channel (the mesh alone reads it as a triangle).
-    const std::vector<int> quad{4}, pinched{0, 1, 2, 2};
-    const std::vector<int> values{0, 1, 2, 3};
-    const FVarChannel channel{4, values.data()};
-    TopologyDescriptor desc = descriptorOf(3, quad, pinched);
-    EXPECT_NO_THROW(Refiner(desc, Options()));
-    desc.numFVarChannels = 1;
-    desc.fvarChannels = &channel;
-    try {
-        Refiner refiner(desc, Options());
-        ADD_FAILURE() << "accepted";
-    } catch (const TopologyError& e) {
-        EXPECT_EQ(e.component(), TopologyDiagnostic::Component::Face);
-        EXPECT_EQ(e.diagnostic().vertex, 2);
-        EXPECT_NE(std::string(e.what()).find("must not repeat a vertex"), std::string::npos) << e.what();
+}
+
+// A face that repeats a vertex is read as its loops in a channel too (docs/face_varying.md), each
+// kept corner with the value of the input corner it comes from: the first of a collapsed edge's
+// corners going around the face, and at a bow tie's knot the corner where the walk leaves it for
+// each loop. Catmull-clark keeps a face whose only repeats are collapsed edges as it is, values too.
+TEST(FVar, FacesThatRepeatAVertexTakeTheirLoopsValues) {
+    struct Case {
+        std::vector<int> verts;
+        Scheme scheme;
+        std::vector<std::vector<int>> faceValues;  // level 0's faces' values (value k is corner k's)
+    };
+    const std::vector<Case> cases{
+        {{0, 1, 2, 2}, Scheme::Bilinear, {{0, 1, 2}}},
+        {{2, 0, 1, 2}, Scheme::SchaeferWarren, {{1, 2, 3}}},
+        {{0, 1, 1, 2}, Scheme::CatmarkButterfly, {{0, 1, 3}}},
+        {{0, 1, 2, 0, 3, 4}, Scheme::Bilinear, {{0, 1, 2}, {3, 4, 5}}},
+        {{0, 1, 2, 0, 0, 3, 4}, Scheme::StamLoop, {{0, 1, 2}, {3, 5, 6}}},
+        {{0, 1, 2, 0, 3, 4}, Scheme::CatmullClark, {{0, 1, 2}, {3, 4, 5}}},
+        {{0, 1, 2, 2}, Scheme::CatmullClark, {{0, 1, 2, 3}}},
+        {{2, 0, 1, 2}, Scheme::CatmullClark, {{0, 1, 2, 3}}},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::string(toString(c.scheme)) + " face " + std::to_string(c.verts[0]) + "..." +
+                     std::to_string(c.verts.size()));
+        const std::vector<int> sizes{int(c.verts.size())};
+        std::vector<int> values(c.verts.size());
+        for (std::size_t k = 0; k < values.size(); ++k) values[k] = int(k);
+        const FVarChannel channel{int(values.size()), values.data()};
+        TopologyDescriptor desc = descriptorOf(5, sizes, c.verts);
+        desc.numFVarChannels = 1;
+        desc.fvarChannels = &channel;
+        for (bool leftHanded : {false, true}) {
+            Options options;
+            options.scheme = c.scheme;
+            options.leftHanded = leftHanded;
+            Refiner refiner(desc, options);
+            ASSERT_EQ(refiner.faces(0).numFaces(), int(c.faceValues.size()));
+            for (int f = 0; f < int(c.faceValues.size()); ++f) {
+                // Left-handed faces are stored with their first corner kept and the rest reversed.
+                std::vector<int> expected = c.faceValues[std::size_t(f)];
+                if (leftHanded) std::reverse(expected.begin() + 1, expected.end());
+                const IndexSpan got = refiner.fvarValuesOfFace(0, 0, f);
+                EXPECT_EQ(std::vector<int>(got.begin(), got.end()), expected) << "face " << f << (leftHanded ? " left-handed" : "");
+            }
+            refiner.refineUniform(2);
+            for (int L = 1; L <= 2; ++L) {
+                const StencilTable& table = refiner.fvarLevelStencils(0, L);
+                for (int i = 0; i < table.numStencils(); ++i) EXPECT_NEAR(stencilWeightSum(table, i), 1.0, 1e-6);
+            }
+        }
+    }
+}
+
+// Collapsed quads at a pole and bow ties under a channel with one value per vertex (no seam): the
+// refined values are the positions' linear map, corner by corner, under every scheme that takes
+// quads, with the values kept linear nowhere (None) and as OpenSubdiv's default (CornersPlus1).
+TEST(FVar, LinearMapThroughFacesThatRepeatAVertex) {
+    io::ObjMesh pole = io::readObj(meshPath("osd/catmark_nonman_quadpole8.obj"));
+    // A 2 x 2 grid of quads whose other two quads are one bow tie knotted at the middle vertex.
+    io::ObjMesh bowTie;
+    bowTie.positions = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0.5f, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0};
+    bowTie.faceSizes = {4, 4, 8};
+    bowTie.faceVerts = {0, 1, 4, 3, 4, 5, 8, 7, 4, 1, 2, 5, 4, 7, 6, 3};
+    for (const io::ObjMesh* mesh : {&pole, &bowTie}) {
+        const FVarChannel channel{mesh->numVertices(), mesh->faceVerts.data()};
+        const std::vector<float> control = linearUVs(mesh->positions);
+        for (Scheme scheme : allSchemes())
+            for (FVarLinearInterpolation fvar : {FVarLinearInterpolation::None, FVarLinearInterpolation::CornersPlus1}) {
+                if (scheme == Scheme::Loop) continue;
+                SCOPED_TRACE(std::string(mesh == &pole ? "pole " : "bow tie ") + toString(scheme) + " " + toString(fvar));
+                Options options;
+                options.scheme = scheme;
+                options.fvarLinearInterpolation = fvar;
+                options.boundary = BoundaryInterpolation::EdgeAndCorner;
+                TopologyDescriptor desc = mesh->descriptor();
+                desc.numFVarChannels = 1;
+                desc.fvarChannels = &channel;
+                Refiner refiner(desc, options);
+                refiner.refineUniform(3);
+                const auto positions = evaluateLevels(refiner, mesh->positions, 3);
+                const auto uvs = evaluateChannelLevels(refiner, 0, control, 2);
+                double worst = 0;
+                for (int L = 1; L <= 3; ++L) {
+                    const std::vector<float> expected = linearUVs(positions[L]);
+                    const LevelFaces faces = refiner.faces(L);
+                    for (int f = 0; f < faces.numFaces(); ++f) {
+                        const IndexSpan verts = faces.verticesOfFace(f), values = refiner.fvarValuesOfFace(0, L, f);
+                        for (int k = 0; k < verts.size(); ++k)
+                            for (int a = 0; a < 2; ++a)
+                                worst = std::max(worst, std::fabs(double(uvs[L][2 * std::size_t(values[k]) + a]) -
+                                                                  double(expected[2 * std::size_t(verts[k]) + a])));
+                    }
+                }
+                EXPECT_LE(worst, 1e-5);
+            }
     }
 }
 
@@ -341,14 +423,20 @@ TEST(FVar, ObjUVsBecomeChannelZero) {
     EXPECT_FLOAT_EQ(uvs[1][2 * std::size_t(values[2])], 0.5f);
     EXPECT_FLOAT_EQ(uvs[1][2 * std::size_t(values[2]) + 1], 0.5f);
 
-    std::istringstream pinched("v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\n\nf 1/1 2/2 3/1 3/2\n");
-    const io::ObjMesh bad = io::parseObj(pinched, "pinched.obj");
-    try {
-        Refiner r(bad.descriptor(channel), Options());
-        ADD_FAILURE() << "accepted";
-    } catch (const TopologyError& e) {
-        EXPECT_EQ(bad.describe(e.diagnostic()).rfind("pinched.obj:7: face 1: vertex 3 appears more than once", 0), 0u)
-            << bad.describe(e.diagnostic());
+    // A collapsed edge in a face with UVs: the corners keep their own vt (catmull-clark keeps the
+    // quad), the first of them where the scheme merges them.
+    std::istringstream pinched("v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n\nf 1/1 2/2 3/3 3/2\n");
+    const io::ObjMesh collapsed = io::parseObj(pinched, "pinched.obj");
+    for (Scheme scheme : {Scheme::CatmullClark, Scheme::SchaeferWarren}) {
+        Options options;
+        options.scheme = scheme;
+        Refiner r(collapsed.descriptor(channel), options);
+        const IndexSpan got = r.fvarValuesOfFace(0, 0, 0);
+        const std::vector<int> expected =
+            scheme == Scheme::CatmullClark ? std::vector<int>{0, 1, 2, 1} : std::vector<int>{0, 1, 2};
+        EXPECT_EQ(std::vector<int>(got.begin(), got.end()), expected);
+        r.refineUniform(2);
+        EXPECT_GT(r.numFVarValues(0, 2), 0);
     }
 }
 

@@ -175,7 +175,8 @@ std::string meshName(const testing::TestParamInfo<std::string>& info) { return t
 
 INSTANTIATE_TEST_SUITE_P(Meshes, FVarLimitWithoutSeams,
                          testing::Values("mixed/mixed_torus.obj", "mixed/checker_cube.obj", "mixed/cylinder_capped.obj",
-                                         "osd/loop_icosahedron.obj", "mixed/split_plane.obj", "osd/catmark_tent.obj"),
+                                         "osd/loop_icosahedron.obj", "mixed/split_plane.obj", "osd/catmark_tent.obj",
+                                         "osd/catmark_nonman_quadpole8.obj"),
                          meshName);
 INSTANTIATE_TEST_SUITE_P(Meshes, FVarLimitWithSeams,
                          testing::Values("osd/catmark_fan.obj", "osd/catmark_nonquads.obj", "osd/catmark_cube_creases1.obj",

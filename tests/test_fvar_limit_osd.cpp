@@ -178,5 +178,41 @@ std::vector<FVarCase> limitCases() {
 
 INSTANTIATE_TEST_SUITE_P(OsdShapes, FVarLimitAgreement, testing::ValuesIn(limitCases()), caseName);
 
+// Collapsed edges under catmull-clark (collapsedEdgeMeshes, as test_fvar_osd): at levels 0-3 every
+// corner as (level position, limit UV) is one of OpenSubdiv's and the other way round (a collapsed
+// edge's corners share a position, so faces are not matched by their corners' positions).
+TEST(FVarLimitAgreementCollapsedEdges, CornersEqualOpenSubdivsAsPositionAndLimitUV) {
+    for (const io::ObjMesh& mesh : collapsedEdgeMeshes()) {
+        for (FVarLinearInterpolation fvar : allFVarLinearInterpolations()) {
+            SCOPED_TRACE(mesh.name + " " + toString(fvar));
+            Options options;
+            options.scheme = Scheme::CatmullClark;
+            options.fvarLinearInterpolation = fvar;
+            FVarChannel uvChannel;
+            Refiner refiner(mesh.descriptor(uvChannel), options);
+            refiner.refineUniform(kMaxLevel);
+            std::vector<float> positions = mesh.positions, uvs = mesh.uvs;
+            for (int L = 0; L <= kMaxLevel; ++L) {
+                SCOPED_TRACE("level " + std::to_string(L));
+                if (L > 0) {
+                    positions = applyTable(refiner.levelStencils(L), positions, 3);
+                    uvs = applyTable(refiner.fvarLevelStencils(0, L), uvs, 2);
+                }
+                const OsdFaceVaryingLimit osd =
+                    osdFaceVaryingLimit(mesh, OsdScheme::Catmark, options.boundary, options.creaseMethod, fvar, L);
+                const LevelFaces faces = refiner.faces(L);
+                const IndexSpan values = refiner.fvarValues(0, L);
+                const std::vector<CornerPoint> ours =
+                    cornerPoints({faces.vertices(), faces.vertices() + faces.numCorners()}, {values.begin(), values.end()},
+                                 positions, limitOf(refiner.fvarLimitStencils(0, L), uvs));
+                const std::vector<CornerPoint> theirs = cornerPoints(osd.faceVerts, osd.faceValues, osd.positions, osd.limit);
+                ASSERT_EQ(ours.size(), theirs.size());
+                EXPECT_LE(farthestFromNearest(ours, theirs), 1e-5);
+                EXPECT_LE(farthestFromNearest(theirs, ours), 1e-5);
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace quadtri::test

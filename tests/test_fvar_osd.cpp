@@ -6,6 +6,8 @@
 // Far::PrimvarRefiner::InterpolateFaceVarying's, corner by corner. The two libraries number
 // refined vertices, faces and values differently, so faces are matched by the positions of their
 // corners (vertices matched by position first), then corners within the face by their vertex.
+// Collapsed edges (catmull-clark keeps them) put two corners on one position: there every corner
+// is compared as (position, UV) instead.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,6 +83,41 @@ TEST_P(FVarAgreement, RefinedUVsEqualOpenSubdivCornerByCorner) {
 }
 
 INSTANTIATE_TEST_SUITE_P(OsdShapes, FVarAgreement, testing::ValuesIn(fvarCases()), caseName);
+
+// Collapsed edges (`4 3 5 5`, kept as they are under catmull-clark) with UVs against OpenSubdiv,
+// on collapsedEdgeMeshes (a collapsed edge's corners with one value and with two): every corner as
+// (position, UV) is one of OpenSubdiv's and the other way round, in equal numbers.
+TEST(FVarAgreementCollapsedEdges, CornersEqualOpenSubdivsAsPositionAndUV) {
+    for (const io::ObjMesh& mesh : collapsedEdgeMeshes()) {
+        for (FVarLinearInterpolation fvar : allFVarLinearInterpolations()) {
+            SCOPED_TRACE(mesh.name + " " + toString(fvar));
+            Options options;
+            options.scheme = Scheme::CatmullClark;
+            options.fvarLinearInterpolation = fvar;
+            FVarChannel uvChannel;
+            Refiner refiner(mesh.descriptor(uvChannel), options);
+            refiner.refineUniform(kMaxLevel);
+            const OsdFaceVarying osd =
+                osdFaceVarying(mesh, OsdScheme::Catmark, options.boundary, options.creaseMethod, fvar, kMaxLevel);
+            std::vector<float> positions = mesh.positions, uvs = mesh.uvs;
+            for (int L = 1; L <= kMaxLevel; ++L) {
+                SCOPED_TRACE("level " + std::to_string(L));
+                positions = applyTable(refiner.levelStencils(L), positions, 3);
+                uvs = applyTable(refiner.fvarLevelStencils(0, L), uvs, 2);
+                const LevelFaces faces = refiner.faces(L);
+                const IndexSpan values = refiner.fvarValues(0, L);
+                const std::vector<CornerPoint> ours =
+                    cornerPoints({faces.vertices(), faces.vertices() + faces.numCorners()}, {values.begin(), values.end()},
+                                 positions, {uvs.begin(), uvs.end()});
+                const std::vector<CornerPoint> theirs = cornerPoints(osd.faceVerts[L], osd.faceValues[L], osd.positions[L],
+                                                                     {osd.uvs[L].begin(), osd.uvs[L].end()});
+                ASSERT_EQ(ours.size(), theirs.size());
+                EXPECT_LE(farthestFromNearest(ours, theirs), 1e-5);
+                EXPECT_LE(farthestFromNearest(theirs, ours), 1e-5);
+            }
+        }
+    }
+}
 
 }  // namespace
 }  // namespace quadtri::test

@@ -7,6 +7,10 @@
 //   - a loop with fewer than 3 corners (`1 1 2 2`, or the pieces of `1 2 1 3`) has no area and is
 //     left out.
 // The loops keep the face's orientation, so neighbours still agree on their shared edges.
+// Each corner kept comes from one corner of the input (what a face-varying channel's values follow,
+// docs/face_varying.md): where a collapsed edge merges corners, the first of them going around the
+// face; at a vertex where a bow tie closes a loop, the corner at which the walk leaves it for each
+// loop (the first corner for the loop that starts there, the closing corner for the one after).
 // Schemes that must equal OpenSubdiv read a face whose only repeats are collapsed edges as
 // OpenSubdiv does: kept as it is, each collapsed edge an edge of its own (CollapsedEdges::Keep).
 #pragma once
@@ -36,13 +40,16 @@ public:
     explicit FaceLoopSplitter(int numVertices, CollapsedEdges collapsed = CollapsedEdges::Drop)
         : position_(std::size_t(numVertices), -1), collapsed_(collapsed) {}
 
-    // Appends the loops of face `verts[0 .. n)` to `faceVerts`, one size per loop to `faceSizes`.
+    // Appends the loops of face `verts[0 .. n)` to `faceVerts`, one size per loop to `faceSizes`,
+    // and, when `corners` is given, the input corner (0 .. n) each kept corner comes from.
     // Linear in n.
-    FaceLoops split(const int* verts, int n, std::vector<int>& faceVerts, std::vector<int>& faceSizes);
+    FaceLoops split(const int* verts, int n, std::vector<int>& faceVerts, std::vector<int>& faceSizes,
+                    std::vector<int>* corners = nullptr);
 
 private:
     std::vector<int> position_;  // per vertex: its index on the walk, or -1 (reset after each face)
     std::vector<int> walk_;
+    std::vector<int> walkCorner_;  // per vertex on the walk: the input corner it stands for
     CollapsedEdges collapsed_;
 };
 

@@ -34,7 +34,8 @@ enum class FVarKind : uint8_t {
 class FVarChannelRefinement {
 public:
     // Level 0 of `channel` over the mesh's level 0 (`mesh`, built from `desc` under `options`).
-    // Throws TopologyError for a face the mesh reads with a change (a repeated vertex).
+    // A face that repeats a vertex is the mesh's loops (face_loops.h), with the values of the
+    // input corners its kept corners come from.
     FVarChannelRefinement(const TopologyDescriptor& desc, int channel, const Topology& mesh, const Options& options);
 
     // Level L = maxLevel() + 1 from level L - 1: `meshParent` is the mesh's level L - 1 (full
