@@ -208,6 +208,14 @@ TEST(RealtimeLoop, RigidMotionOfTheBentCageMovesTheSurfaceRigidly) {
     }
 }
 
+TEST(RealtimeLoop, FastestTablesAreFactorizedWithinTheBudget) {
+    const SurfaceTables fastest = realtime::fastestSurfaceTables(*cage().refiner, 1);
+    EXPECT_EQ(fastest.route, TableRoute::FactorizedLimit);
+    EXPECT_EQ(fastest.numPoints, cage().refiner->faces(1).numVertices());
+    EXPECT_EQ(fastest.numControl, cage().refiner->faces(0).numVertices());
+    EXPECT_TRUE(fastest.levels.empty());
+}
+
 TEST(RealtimeLoop, TablesOnlyForRefinedLevels) {
     EXPECT_THROW(SurfaceTables(*cage().refiner, 0, TableRoute::FactorizedLimit), std::invalid_argument);
     EXPECT_THROW(SurfaceTables(*cage().refiner, 2, TableRoute::LevelsThenLimit), std::invalid_argument);

@@ -108,7 +108,7 @@ struct DemoArgs {
     int frames = 120;         // timed frames per evaluator, at most
     double seconds = 2.0;     // time per evaluator, at most (at least 3 frames are timed)
     std::vector<EvaluatorKind> evaluators{EvaluatorKind::Cpu, EvaluatorKind::Tbb, EvaluatorKind::Vulkan};
-    realtime::TableRoute route = realtime::TableRoute::FactorizedLimit;
+    std::optional<realtime::TableRoute> route;  // default: realtime::fastestSurfaceTables' choice
 };
 
 // The steps every subcommand shares (tools/commands.cpp). The mesh of a file (its warnings

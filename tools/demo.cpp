@@ -87,11 +87,12 @@ int runDemo(const DemoArgs& args) {
 
     Clock::time_point start = Clock::now();
     refiner.refineUniform(args.level);
-    const realtime::SurfaceTables tables(refiner, args.level, args.route);
+    const realtime::SurfaceTables tables = args.route ? realtime::SurfaceTables(refiner, args.level, *args.route)
+                                                      : realtime::fastestSurfaceTables(refiner, args.level);
     const LevelFaces faces = refiner.faces(args.level);
     std::printf("level %d: %d vertices, %d faces; limit positions and normals through the %s tables (limit table %.1f MiB, "
                 "%zu entries), analysed in %.0f ms\n",
-                args.level, faces.numVertices(), faces.numFaces() - faces.numHoles(), realtime::toString(args.route),
+                args.level, faces.numVertices(), faces.numFaces() - faces.numHoles(), realtime::toString(tables.route),
                 double(tables.limit.bytes()) / (1 << 20), tables.limit.numEntries(), msSince(start));
 
     realtime::DeformingSurface surface{realtime::TwoBoneSkin(mesh.positions)};
@@ -135,7 +136,7 @@ int runDemo(const DemoArgs& args) {
     for (const auto& evaluator : evaluators) {
         const Row row = timeEvaluator(surface, *evaluator, args);
         char normalsMs[32] = "(in evaluate)";
-        if (args.route != realtime::TableRoute::FactorizedLimit)
+        if (tables.route != realtime::TableRoute::FactorizedLimit)
             std::snprintf(normalsMs, sizeof normalsMs, "%.3f", row.phases.normalsMs);
         std::printf("| %s | %d | %.3f | %.3f | %s | %.3f | %.1f |\n", row.name.c_str(), row.frames, row.phases.deformMs,
                     row.phases.evaluateMs, normalsMs, row.frameMs, 1000.0 / row.frameMs);

@@ -24,4 +24,12 @@ SurfaceTables::SurfaceTables(const Refiner& refiner, int level, TableRoute route
     fallback = buildMeshNormalTable(refiner.faces(level));
 }
 
+SurfaceTables fastestSurfaceTables(const Refiner& refiner, int level) {
+    try {
+        return SurfaceTables(refiner, level, TableRoute::FactorizedLimit);
+    } catch (const MemoryBudgetError&) {
+        return SurfaceTables(refiner, level, TableRoute::LevelsThenLimit);
+    }
+}
+
 }  // namespace quadtri::realtime

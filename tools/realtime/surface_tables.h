@@ -41,4 +41,8 @@ struct SurfaceTables {
     MeshNormalTable fallback;
 };
 
+// The fastest route's tables: FactorizedLimit, or LevelsThenLimit where the memory budget
+// refuses the factorized table (near high-valence vertices at high levels).
+SurfaceTables fastestSurfaceTables(const Refiner& refiner, int level);
+
 }  // namespace quadtri::realtime
