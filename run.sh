@@ -39,10 +39,15 @@ build() {
 
 DEMO_CAGE=data/mixed_limb.obj
 
+# Whether the built quadtri has the subcommand $1 (its --help lists it).
+has_command() {
+    "$BUILD_DIR/bin/quadtri" --help | grep -E "^ +$1 " >/dev/null  # grep reads it all: no SIGPIPE
+}
+
 # The README's pictures, rendered by `quadtri render` into $BUILD_DIR/demo/: run here once the
 # CLI has the command (the renderer's part of the demo).
 demo_pictures() {
-    if ! "$BUILD_DIR/bin/quadtri" render --help >/dev/null 2>&1; then
+    if ! has_command render; then
         echo "run.sh: this quadtri has no render command yet: no pictures in $BUILD_DIR/demo/"
         return 0
     fi
@@ -54,7 +59,7 @@ demo_pictures() {
 # The viewer on the bundled cage with a display (DISPLAY or WAYLAND_DISPLAY), else its command.
 demo_viewer() {
     local view=("$BUILD_DIR/bin/quadtri" view "$DEMO_CAGE")
-    if ! "$BUILD_DIR/bin/quadtri" view --help >/dev/null 2>&1; then
+    if ! has_command view; then
         echo "run.sh: this quadtri has no viewer yet; once it has, look at the cage with: ${view[*]}"
     elif [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
         "${view[@]}"

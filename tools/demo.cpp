@@ -4,8 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "tools/commands.h"
 #include "tools/realtime/deforming_surface.h"
