@@ -1,6 +1,7 @@
 // The real-time loop on Vulkan (lavapipe here, validation on): the same frame through
 // CpuEvaluator and VulkanFrameEvaluator agrees within 1e-5 on both table routes, and recording
-// it into a caller's command buffer (as a renderer does) gives the same outputs.
+// the cage's upload and the evaluation into a caller's command buffer (as a renderer does) gives
+// the same outputs.
 #include <gtest/gtest.h>
 
 #include "tests/realtime_support.h"
@@ -32,11 +33,14 @@ TEST_F(RealtimeVulkan, SameFrameAsTheCpuWithin1e5OnBothRoutes) {
             EXPECT_LT(maxDifference(p0, p1), 1e-5f) << realtime::toString(route) << " at " << radians;
             EXPECT_LT(maxDifference(n0, n1), 1e-5f) << realtime::toString(route) << " at " << radians;
         }
-        // The renderer's way: the cage uploaded, the evaluation recorded into its own command buffer.
+        // The renderer's way: the cage's upload and the evaluation recorded into its own command
+        // buffer, one submission.
         std::vector<float> bent(cage.mesh.positions.size());
         surface.skin().pose(0.9f, bent.data());
-        vulkan.setCage(bent.data());
-        ctx->submitAndWait([&](VkCommandBuffer cmd) { vulkan.record(cmd); });
+        ctx->submitAndWait([&](VkCommandBuffer cmd) {
+            vulkan.recordCage(cmd, bent.data());
+            vulkan.record(cmd);
+        });
         vulkan.resetDescriptorSets();
         vulkan.readBack(p1, n1);
         surface.frame(vulkan, 0.9f);

@@ -1,6 +1,7 @@
 #include "tools/realtime/vulkan_frame_evaluator.h"
 
 #include <chrono>
+#include <cstring>
 
 namespace quadtri::realtime {
 
@@ -41,6 +42,18 @@ VulkanFrameEvaluator::VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTabl
       normals_(VulkanVertexBuffer::create(ctx, tables.numPoints, 3)), stencilEvaluator_(ctx), limitEvaluator_(ctx) {}
 
 void VulkanFrameEvaluator::setCage(const float* cage) { source_.updateData(cage, 0, numControl_); }
+
+void VulkanFrameEvaluator::recordCage(VkCommandBuffer cmd, const float* cage) {
+    const VkDeviceSize bytes = VkDeviceSize(numControl_) * 3 * sizeof(float);
+    if (staging_.buffer() == VK_NULL_HANDLE)
+        staging_ = detail::DeviceBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    // Host writes to coherent memory before the submission are visible to its transfers.
+    std::memcpy(staging_.map(), cage, bytes);
+    const VkBufferCopy region{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, staging_.buffer(), source_.buffer(), 1, &region);
+    detail::barrierAfterTransferWrite(cmd);
+}
 
 void VulkanFrameEvaluator::recordLevels(VkCommandBuffer cmd) {
     if (!levels_.empty()) stencilEvaluator_.EvalLevels(cmd, {source_.buffer(), 0}, kXyz, pointers(levels_));

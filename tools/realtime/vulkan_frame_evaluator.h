@@ -12,6 +12,7 @@
 #include <quadtri/osd/vulkan_evaluator.h>
 #include <quadtri/osd/vulkan_limit_evaluator.h>
 #include <quadtri/osd/vulkan_limit_tables.h>
+#include <quadtri/osd/vulkan_memory.h>
 #include <quadtri/osd/vulkan_stencil_table.h>
 #include "tools/realtime/frame_evaluator.h"
 #include "tools/realtime/surface_tables.h"
@@ -32,11 +33,14 @@ public:
     void evaluate(PhaseTimes& times) override;
     void readBack(std::vector<float>& positions, std::vector<float>& normals) override;
 
-    // For a renderer: records the whole evaluation into `cmd` (a primary command buffer of the
-    // context's device on a compute-capable queue family), after the cage's upload. Its last
-    // barrier makes the outputs visible to compute, transfer and host reads; add a barrier to
-    // the vertex-input stage before drawing from them. Call resetDescriptorSets() once the
-    // device has finished `cmd`.
+    // For a renderer, a frame with no wait: recordCage(cmd, cage) copies the cage into a
+    // host-visible staging buffer of the evaluator's and records its upload into `cmd` (a primary
+    // command buffer of the context's device on a compute-capable queue family); the staging
+    // buffer is reused, so the device must have finished the previous frame's `cmd`. record(cmd)
+    // then records the evaluation; its last barrier makes the outputs visible to compute,
+    // transfer and host reads: add a barrier to the vertex-input stage before drawing from them.
+    // Call resetDescriptorSets() once the device has finished `cmd`.
+    void recordCage(VkCommandBuffer cmd, const float* cage);
     void record(VkCommandBuffer cmd);
     void resetDescriptorSets();
 
@@ -58,6 +62,7 @@ private:
     std::unique_ptr<VulkanMeshNormalTable> fallback_;
     // The cage at elements [0, numControl), followed by levels 1..N under LevelsThenLimit.
     VulkanVertexBuffer source_, positions_, normals_;
+    detail::DeviceBuffer staging_;  // recordCage's copy of the cage
     VulkanEvaluator stencilEvaluator_;
     VulkanLimitEvaluator limitEvaluator_;
 };
