@@ -216,8 +216,27 @@ TEST(RealtimeLoop, FastestTablesAreFactorizedWithinTheBudget) {
     EXPECT_TRUE(fastest.levels.empty());
 }
 
+// Level 0: the cage's own limit surface, the same through both routes (no level table).
+TEST(RealtimeLoop, LevelZeroIsTheCagesLimitSurface) {
+    const std::vector<float> bent = posed(kBend);
+    const LimitStencilTable limit = cage().refiner->limitStencils(0);
+    const MeshNormalTable fallback = buildMeshNormalTable(cage().refiner->faces(0));
+    const int n = limit.numStencils();
+    std::vector<float> positions(3 * std::size_t(n)), normals(3 * std::size_t(n));
+    const BufferDescriptor xyz(0, 3, 3);
+    CpuEvaluator::EvalLimitStencils(bent.data(), xyz, positions.data(), xyz, nullptr, xyz, nullptr, xyz,
+                                    normals.data(), xyz, limit, &fallback);
+    for (TableRoute route : {TableRoute::FactorizedLimit, TableRoute::LevelsThenLimit}) {
+        const SurfaceTables t(*cage().refiner, 0, route);
+        EXPECT_EQ(t.numPoints, t.numControl);
+        const Frame frame = evaluate(t, bent, false);
+        EXPECT_EQ(frame.positions, positions) << realtime::toString(route);
+        EXPECT_LT(maxDifference(frame.normals, normals), 1e-6f) << realtime::toString(route);  // fallback or not
+    }
+}
+
 TEST(RealtimeLoop, TablesOnlyForRefinedLevels) {
-    EXPECT_THROW(SurfaceTables(*cage().refiner, 0, TableRoute::FactorizedLimit), std::invalid_argument);
+    EXPECT_THROW(SurfaceTables(*cage().refiner, -1, TableRoute::FactorizedLimit), std::invalid_argument);
     EXPECT_THROW(SurfaceTables(*cage().refiner, 2, TableRoute::LevelsThenLimit), std::invalid_argument);
     HostFrameEvaluator evaluator(tables(TableRoute::FactorizedLimit), false);
     realtime::PhaseTimes times;

@@ -11,8 +11,8 @@ const char* toString(TableRoute route) {
 
 SurfaceTables::SurfaceTables(const Refiner& refiner, int level, TableRoute route)
     : route(route), level(level), numControl(refiner.faces(0).numVertices()), numPoints(0) {
-    if (level < 1 || level > refiner.maxLevel())
-        throw std::invalid_argument("SurfaceTables: level " + std::to_string(level) + " outside the refined 1.." +
+    if (level < 0 || level > refiner.maxLevel())
+        throw std::invalid_argument("SurfaceTables: level " + std::to_string(level) + " outside the refined 0.." +
                                     std::to_string(refiner.maxLevel()));
     numPoints = refiner.faces(level).numVertices();
     if (route == TableRoute::FactorizedLimit) {

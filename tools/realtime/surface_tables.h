@@ -24,8 +24,8 @@ enum class TableRoute {
 };
 const char* toString(TableRoute route);
 
-// The host tables of `route` for level `level` (>= 1) of `refiner` (refined at least that far),
-// copied, so they outlive the Refiner. Throws what the Refiner throws (MemoryBudgetError
+// The host tables of `route` for level `level` (>= 0; at level 0 both routes are the cage's own
+// limit table) of `refiner` (refined at least that far), copied, so they outlive the Refiner. Throws what the Refiner throws (MemoryBudgetError
 // included).
 struct SurfaceTables {
     SurfaceTables(const Refiner& refiner, int level, TableRoute route);
