@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -179,6 +180,38 @@ TEST(LimitEvaluator, NormalsAreTheUnitCrossProductOfTheTangents) {
     }
 }
 
+void expectSameBits(const Outputs& a, const Outputs& b, const std::string& what) {
+    for (int k = 0; k < 4; ++k)
+        EXPECT_EQ(std::memcmp(a.data[k].data(), b.data[k].data(), a.data[k].size() * sizeof(float)), 0)
+            << what << " output " << k;
+}
+
+// The 3-float AVX2 loop takes normals eight stencils at a time (kernels/limit_kernel_avx2.cpp);
+// a range shorter than eight takes the per-stencil normal. Every stencil evaluated alone, and
+// ranges that start and end off the batches, give the whole call's bits, degenerate tangents
+// (zero without a fallback, the mesh normal with one) included.
+TEST(LimitEvaluator, BatchedNormalsAreThePerStencilOnesBitwise) {
+    const bool all[4] = {true, true, true, true};
+    const LimitStencilTable random = randomLimitTable(3000, 400, 29);
+    const std::vector<float> src = randomSource(kPacked, 400, 31);
+    const CornerLevel L = cornerLevel(2);
+    struct Case {
+        const LimitStencilTable& table;
+        const std::vector<float>& src;
+        const MeshNormalTable* fallback;
+        const char* name;
+    };
+    for (const Case& c : {Case{random, src, nullptr, "random"}, Case{L.table, L.positions, &L.meshNormals, "corners"}}) {
+        const int n = c.table.numStencils();
+        Outputs whole = makeOutputs(3, n), single = makeOutputs(3, n), ranges = makeOutputs(3, n);
+        evalOn(Host::Cpu, c.src, kPacked, whole, all, c.table, c.fallback);
+        for (int i = 0; i < n; ++i) evalOn(Host::Cpu, c.src, kPacked, single, all, c.table, c.fallback, i, i + 1);
+        for (int i = 0; i < n; i += 13) evalOn(Host::Cpu, c.src, kPacked, ranges, all, c.table, c.fallback, i, std::min(n, i + 13));
+        expectSameBits(whole, single, std::string(c.name) + ", one stencil at a time");
+        expectSameBits(whole, ranges, std::string(c.name) + ", ranges of 13");
+    }
+}
+
 // Parallel or zero tangents: the level's mesh normal at that vertex with a fallback table,
 // (0, 0, 0) without; elsewhere the normal of the vertex's first face's corner.
 TEST(LimitEvaluator, DegenerateTangentsFallBackToTheMeshNormal) {
@@ -210,12 +243,6 @@ TEST(LimitEvaluator, DegenerateTangentsFallBackToTheMeshNormal) {
         }
     }
     EXPECT_GT(degenerate, n / 8);
-}
-
-void expectSameBits(const Outputs& a, const Outputs& b, const std::string& what) {
-    for (int k = 0; k < 4; ++k)
-        EXPECT_EQ(std::memcmp(a.data[k].data(), b.data[k].data(), a.data[k].size() * sizeof(float)), 0)
-            << what << " output " << k;
 }
 
 TEST(LimitEvaluator, TbbEqualsCpuBitwise) {

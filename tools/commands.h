@@ -11,6 +11,9 @@
 #include <quadtri/far/options.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/far/stencil_table.h>
+#include "tools/obj_io.h"
+#include "tools/realtime/frame_evaluator.h"
+#include "tools/realtime/surface_tables.h"
 
 namespace quadtri::cli {
 
@@ -80,16 +83,10 @@ std::optional<std::vector<std::vector<float>>> evaluateLevelsOnVulkan(const std:
 // The same as evaluateSurface on a headless Vulkan device, or nothing without one (saying why).
 std::optional<Surface> evaluateSurfaceOnVulkan(const Refiner& refiner, int level, const std::vector<float>& refined,
                                                bool limit, NormalKind normals);
-// For the demo's Vulkan column: a headless device to time on, or null (saying why on stderr).
-struct VulkanTiming;
-struct VulkanTimingDeleter {
-    void operator()(VulkanTiming* timing) const;
-};
-using VulkanTimingPtr = std::unique_ptr<VulkanTiming, VulkanTimingDeleter>;
-VulkanTimingPtr openVulkanTiming();
-// Median milliseconds of `runs` Vulkan evaluations of `table` (record, submit, wait on the fence;
-// the table and control vertices are uploaded once beforehand, outside the timing).
-double vulkanEvalMs(VulkanTiming& timing, const StencilTable& table, const std::vector<float>& control, int runs);
+// For the demo: the real-time loop on a headless Vulkan device with `tables` uploaded, or null
+// (saying why on stderr). `device` gets the device's name.
+std::unique_ptr<realtime::FrameEvaluator> makeVulkanFrameEvaluator(const realtime::SurfaceTables& tables,
+                                                                   std::string& device);
 
 // Where face-varying channel `channel` of `refiner` is cut at level 0: the mesh edges whose faces
 // disagree on a value at either end, and the vertices with more than one value.
@@ -104,11 +101,23 @@ struct InfoArgs {
     int level = 3;
 };
 
+// `quadtri demo`: the real-time loop (tools/realtime/) timed per evaluator.
 struct DemoArgs {
     MeshArgs mesh;
-    int levels = 3;
-    std::string outDir = ".";
+    int level = 3;
+    int frames = 120;         // timed frames per evaluator, at most
+    double seconds = 2.0;     // time per evaluator, at most (at least 3 frames are timed)
+    std::vector<EvaluatorKind> evaluators{EvaluatorKind::Cpu, EvaluatorKind::Tbb, EvaluatorKind::Vulkan};
+    std::optional<realtime::TableRoute> route;  // default: realtime::fastestSurfaceTables' choice
 };
+
+// The steps every subcommand shares (tools/commands.cpp). The mesh of a file (its warnings
+// printed; no faces refused), the options its tags and the flags ask for, the analyzer over it
+// (topology errors in the file's numbering), and a check that refined positions are finite.
+io::ObjMesh loadMesh(const MeshArgs& args);
+Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh);
+Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options);
+void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, int level, Scheme scheme);
 
 int runRefine(const RefineArgs& args);
 int runInfo(const InfoArgs& args);
