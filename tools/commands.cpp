@@ -19,8 +19,6 @@
 
 namespace quadtri::cli {
 
-namespace {
-
 io::ObjMesh loadMesh(const MeshArgs& args) {
     io::ObjMesh mesh = io::readObj(args.input);
     if (mesh.numFaces() == 0)
@@ -47,6 +45,8 @@ Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options) {
     }
 }
 
+namespace {
+
 // Finite input can still overflow: a scheme with weights of both signs sums terms larger than the
 // result. The error names the vertex in the output file's numbering.
 void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, int level, Scheme scheme) {
@@ -62,8 +62,8 @@ void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, i
     throw io::ObjError(mesh.name + text);
 }
 
-// Defaults, then the file's tags, then explicit flags. The scheme comes first: whether the
-// file's smoothtriangles tag applies depends on it.
+}  // namespace
+
 Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     Options base;
     if (args.scheme) base.scheme = *args.scheme;
@@ -75,6 +75,8 @@ Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     if (args.memoryBudget) options.memoryBudgetBytes = *args.memoryBudget;
     return options;
 }
+
+namespace {
 
 int outputFaces(const LevelFaces& faces) { return faces.numFaces() - faces.numHoles(); }
 
@@ -177,6 +179,12 @@ io::TriangleMesh triangleMeshOf(const LevelFaces& faces, const Surface& surface,
 }
 
 }  // namespace
+
+const std::vector<std::string>& renderShadings() {
+    static const std::vector<std::string> names{"smooth", "flat", "reflection-lines", "mean-curvature", "face-type",
+                                                "textured"};
+    return names;
+}
 
 int runRefine(const RefineArgs& args) {
     if (args.output.empty()) throw io::ObjError("-o: the output file name is empty");

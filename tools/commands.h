@@ -2,6 +2,7 @@
 // lets TopologyError, io::ObjError and other exceptions escape to main(), which reports them.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <quadtri/far/options.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/far/stencil_table.h>
+#include "tools/obj_io.h"
 
 namespace quadtri::cli {
 
@@ -24,6 +26,15 @@ struct MeshArgs {
     std::optional<std::size_t> memoryBudget;        // default: Options::memoryBudgetBytes
     bool smoothTriangles = false;                   // --smooth-triangles (catmull-clark only); else the file's tag
 };
+
+// The file, refused with an ObjError when it has no faces; its warnings printed.
+io::ObjMesh loadMesh(const MeshArgs& args);
+// Defaults, then the file's tags, then explicit flags. The scheme comes first: whether the
+// file's smoothtriangles tag applies depends on it.
+Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh);
+// The analyzer over a file's mesh, with its UVs as face-varying channel 0 when the file has
+// them; topology errors name the file line of the face or tag at fault.
+Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options);
 
 // Largest refinement level accepted on the command line (the memory budget may refuse less).
 constexpr int kMaxLevel = 10;
@@ -110,8 +121,32 @@ struct DemoArgs {
     std::string outDir = ".";
 };
 
+// `quadtri render` (tools/render_command.cpp; docs/rendering.md).
+struct RenderArgs {
+    MeshArgs mesh;
+    int level = 3;
+    std::string output;
+    std::string shading = "smooth";  // a name of renderShadings()
+    bool cage = false, points = false, hideSurface = false;
+    bool limit = false;                // vertices on the limit surface
+    float yaw = 30.0f, pitch = 20.0f;  // degrees
+    int width = 800, height = 600;     // of each panel
+    std::array<float, 3> lightDirection{-0.4f, 0.8f, 0.6f};  // towards the light, view space
+    std::array<float, 3> lightColor{1.0f, 1.0f, 1.0f};
+    std::string texture;               // PNG or JPEG for textured shading; empty: a checker
+    EvaluatorKind evaluator = EvaluatorKind::Cpu;
+    std::optional<float> creaseSharpness;  // replaces every `t crease` sharpness of the file
+    std::vector<Scheme> compare;           // one panel per scheme, labelled
+    float stripes = 16.0f;                 // reflection lines over the half circle
+    std::optional<float> curvatureRange;   // mean curvature at the colour map's ends; default: data's 95th percentile
+};
+// The shading names `--shading` takes, in help order.
+const std::vector<std::string>& renderShadings();
+
 int runRefine(const RefineArgs& args);
 int runInfo(const InfoArgs& args);
 int runDemo(const DemoArgs& args);
+// Exit status 2, with the reason on stderr, without a Vulkan device (or in a build without Vulkan).
+int runRender(const RenderArgs& args);
 
 }  // namespace quadtri::cli

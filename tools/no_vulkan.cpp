@@ -1,5 +1,5 @@
 // The CLI's Vulkan side when quadtri is built without Vulkan (QUADTRI_WITH_VULKAN=OFF): every
-// request for it falls back to the CPU, saying so.
+// request for it falls back to the CPU, saying so; `render`, which needs it, is refused.
 #include <cstdio>
 
 #include "tools/commands.h"
@@ -26,5 +26,10 @@ VulkanTimingPtr openVulkanTiming() {
 }
 
 double vulkanEvalMs(VulkanTiming&, const StencilTable&, const std::vector<float>&, int) { return 0; }
+
+int runRender(const RenderArgs&) {
+    std::fprintf(stderr, "quadtri: render draws with Vulkan, and this quadtri was built without it (QUADTRI_WITH_VULKAN=OFF)\n");
+    return 2;
+}
 
 }  // namespace quadtri::cli
