@@ -25,12 +25,19 @@ bool hasLayer(const char* name) {
     return false;
 }
 
+std::atomic<int>& totalMessages() {
+    static std::atomic<int> count{0};
+    return count;
+}
+
 VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                          VkDebugUtilsMessageTypeFlagsEXT types,
                                          const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
     // The layer's findings are counted, not the loader's general messages.
-    if (types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT))
+    if (types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT)) {
         static_cast<std::atomic<int>*>(user)->fetch_add(1);
+        totalMessages().fetch_add(1);
+    }
     std::fprintf(stderr, "quadtri: Vulkan validation %s: %s\n",
                  severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning",
                  data && data->pMessage ? data->pMessage : "(no message)");
@@ -57,6 +64,8 @@ std::vector<const char*> pointers(const std::vector<std::string>& names) {
 }
 
 }  // namespace
+
+int GpuDevice::totalValidationMessageCount() { return totalMessages().load(); }
 
 GpuDevice::GpuDevice(const GpuDeviceOptions& options) {
     try {
