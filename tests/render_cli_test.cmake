@@ -87,6 +87,9 @@ run(0 render "${TORUS}" --level 1 --size 50x40 --compare catmull-clark,stam-loop
     --yaw -40 --pitch 60 --light-dir 0,1,0 --light-color 1,0.9,0.8 --stripes 8 --shading reflection-lines
     -o "${WORK}/compare.png")
 expect_png("${WORK}/compare.png" 150 40)
+# Supersampled: the size asked for, not K times it.
+run(0 render "${TORUS}" --level 1 --size 40x30 --supersample 3 --label "level 1" -o "${WORK}/supersampled.png")
+expect_png("${WORK}/supersampled.png" 40 30)
 # A texture (a PNG written above), the crease override, the surface hidden.
 run(0 render "${CYLINDER}" --level 1 --size 32x32 --shading textured --texture "${WORK}/torus.png"
     --crease-sharpness 2.5 --no-surface --cage -o "${WORK}/textured.png")
@@ -96,7 +99,7 @@ expect_contains("${ERR}" "has no UVs")
 # Bad input: the flag's own message, exit 2, nothing written.
 foreach(bad "--size;0x0" "--size;64" "--size;64x48x3" "--shading;glossy" "--compare;catmull-clark,nope"
             "--pitch;95" "--light-color;2,0,0" "--light-dir;1,2" "--evaluator;gpu" "--level;11"
-            "--crease-sharpness;-1" "--stripes;0")
+            "--crease-sharpness;-1" "--stripes;0" "--supersample;5")
   run(2 render "${TORUS}" ${bad} -o "${WORK}/bad.png")
 endforeach()
 run(2 render "${TORUS}" --compare nope -o "${WORK}/bad.png")

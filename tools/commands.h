@@ -131,7 +131,7 @@ struct RenderArgs {
     bool limit = false;                // vertices on the limit surface
     float yaw = 30.0f, pitch = 20.0f;  // degrees
     int width = 800, height = 600;     // of each panel
-    std::array<float, 3> lightDirection{-0.4f, 0.8f, 0.6f};  // towards the light, view space
+    std::array<float, 3> lightDirection{-0.3f, 0.5f, 0.8f};  // towards the light, view space
     std::array<float, 3> lightColor{1.0f, 1.0f, 1.0f};
     std::string texture;               // PNG or JPEG for textured shading; empty: a checker
     EvaluatorKind evaluator = EvaluatorKind::Cpu;
@@ -139,6 +139,8 @@ struct RenderArgs {
     std::vector<Scheme> compare;           // one panel per scheme, labelled
     float stripes = 16.0f;                 // reflection lines over the half circle
     std::optional<float> curvatureRange;   // mean curvature at the colour map's ends; default: data's 95th percentile
+    std::string label;                     // written in the top-left corner (with --compare: after the scheme)
+    int supersample = 1;                   // drawn k times larger, each k x k block averaged
 };
 // The shading names `--shading` takes, in help order.
 const std::vector<std::string>& renderShadings();

@@ -170,7 +170,7 @@ void addRenderFlags(CLI::App& cmd, cli::RenderArgs& args, const std::map<std::st
             "WxH"));
     cmd.add_option_function<std::string>(
            "--light-dir", [&args](const std::string& s) { args.lightDirection = *parseTriple(s, -1e6f, 1e6f); },
-           "Direction towards the light in view space: x right, y up, z towards the viewer (default -0.4,0.8,0.6)")
+           "Direction towards the light in view space: x right, y up, z towards the viewer (default -0.3,0.5,0.8)")
         ->check(tripleCheck("a direction", -1e6f, 1e6f));
     cmd.add_option_function<std::string>(
            "--light-color", [&args](const std::string& s) { args.lightColor = *parseTriple(s, 0.0f, 1.0f); },
@@ -206,6 +206,12 @@ void addRenderFlags(CLI::App& cmd, cli::RenderArgs& args, const std::map<std::st
     cmd.add_option("--stripes", args.stripes, "Reflection lines: stripes over the half circle of directions")
         ->check(CLI::Range(1.0f, 200.0f))
         ->capture_default_str();
+    cmd.add_option("--supersample", args.supersample,
+                   "Anti-aliasing: draw K times wider and higher and average each K x K block")
+        ->check(CLI::Range(1, 4))
+        ->capture_default_str();
+    cmd.add_option("--label", args.label,
+                   "Text written in the image's top-left corner (with --compare, after each scheme's name)");
     cmd.add_option("--curvature-range", args.curvatureRange,
                    "Mean curvature shown at the colour map's ends (default: the 95th percentile of |H|)")
         ->check(CLI::PositiveNumber);

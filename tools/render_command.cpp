@@ -70,10 +70,13 @@ Image drawPanel(const RenderArgs& args, const io::ObjMesh& mesh, const Panel& p,
         renderer.uploadVertices(p.host.positions.data(), p.host.normals.data(), p.refiner.faces(args.level).numVertices());
     if (!p.curvature.empty()) renderer.uploadCurvature(p.curvature);
     renderer.setCage(render::cageOf(p.refiner.level(0), mesh.positions.data()));
-    Image image = target.render({0.13f, 0.14f, 0.16f, 1.0f}, [&](VkCommandBuffer cmd, VkExtent2D extent) {
-        renderer.record(cmd, extent, view);
-    });
-    if (p.scheme) render::drawLabel(image, 8, 8, toString(*p.scheme), 2, {255, 255, 255});
+    Image image = render::downsample(
+        target.render({0.13f, 0.14f, 0.16f, 1.0f},
+                      [&](VkCommandBuffer cmd, VkExtent2D extent) { renderer.record(cmd, extent, view); }),
+        args.supersample);
+    std::string label = p.scheme ? toString(*p.scheme) : "";
+    if (!args.label.empty()) label += (label.empty() ? "" : ", ") + args.label;
+    if (!label.empty()) render::drawLabel(image, 8, 8, label, 2, {255, 255, 255});
     return image;
 }
 
@@ -98,7 +101,8 @@ int runRender(const RenderArgs& args) {
         throw std::runtime_error(std::string("render needs a Vulkan device: ") + e.what());
     }
     VulkanContext& ctx = gpu->context();
-    render::OffscreenTarget target(ctx, uint32_t(args.width), uint32_t(args.height));
+    const int k = args.supersample;
+    render::OffscreenTarget target(ctx, uint32_t(k * args.width), uint32_t(k * args.height));
     render::Renderer renderer(ctx, target.renderPass());
     if (texture) renderer.setTexture(&*texture);
 
@@ -108,6 +112,8 @@ int runRender(const RenderArgs& args) {
     view.showCage = args.cage;
     view.showPoints = args.points;
     view.stripes = args.stripes;
+    view.edgeWidthPixels *= float(k);
+    view.pointSizePixels *= float(k);
     view.camera.yawDegrees = args.yaw;
     view.camera.pitchDegrees = args.pitch;
     const render::BoundingSphere sphere = render::boundingSphere(mesh.positions.data(), mesh.numVertices());

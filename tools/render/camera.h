@@ -31,7 +31,7 @@ struct Camera {
 };
 
 struct Light {
-    glm::vec3 direction{-0.4f, 0.8f, 0.6f};  // towards the light, in view space (follows the camera)
+    glm::vec3 direction{-0.3f, 0.5f, 0.8f};  // towards the light, in view space (follows the camera)
     glm::vec3 color{1.0f, 1.0f, 1.0f};
 };
 

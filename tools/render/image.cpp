@@ -35,6 +35,21 @@ std::vector<uint8_t> encodePng(const Image& image) {
     return bytes;
 }
 
+Image downsample(const Image& image, int k) {
+    if (k <= 1) return image;
+    Image out{image.width / k, image.height / k, {}};
+    out.rgba.resize(std::size_t(out.width) * std::size_t(out.height) * 4);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                int sum = 0;
+                for (int dy = 0; dy < k; ++dy)
+                    for (int dx = 0; dx < k; ++dx) sum += image.pixel(k * x + dx, k * y + dy)[c];
+                out.pixel(x, y)[c] = uint8_t((sum + k * k / 2) / (k * k));
+            }
+    return out;
+}
+
 Image sideBySide(const std::vector<Image>& panels) {
     Image out;
     for (const Image& p : panels) out.width += p.width, out.height = std::max(out.height, p.height);

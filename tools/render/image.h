@@ -24,6 +24,9 @@ Image readImage(const std::string& path);
 // Encodes as PNG (RGBA).
 std::vector<uint8_t> encodePng(const Image& image);
 
+// Each k x k block of pixels averaged into one (the image's size divided by k, rounded down):
+// supersampled anti-aliasing.
+Image downsample(const Image& image, int k);
 // `panels` (of one height) left to right.
 Image sideBySide(const std::vector<Image>& panels);
 // Draws `text` (ASCII) with its top-left corner at (x, y), `scale` pixels per font unit, over a

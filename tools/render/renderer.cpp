@@ -412,15 +412,28 @@ void Renderer::setCage(const Cage& cage) {
     writeCageSet();
 }
 
+void Renderer::updateCagePositions(const float* positions) {
+    std::memcpy(cagePositions_.map(), positions, 3 * std::size_t(numPoints_) * sizeof(float));
+}
+
 void Renderer::setTexture(const Image* image) {
     texture_ = image ? std::make_unique<Texture>(ctx_, *image) : nullptr;
     writeSurfaceSet();
 }
 
-void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings& view) {
+glm::mat4 viewProjection(const ViewSettings& view, VkExtent2D extent) {
     const float aspect = float(extent.width) / float(std::max(extent.height, 1u));
+    return view.camera.projection(aspect, view.sceneRadius) * view.camera.view();
+}
+
+glm::vec3 toPixel(const ViewSettings& view, VkExtent2D extent, const glm::vec3& world) {
+    const glm::vec4 c = viewProjection(view, extent) * glm::vec4(world, 1.0f);
+    return {(c.x / c.w + 1.0f) * 0.5f * float(extent.width), (c.y / c.w + 1.0f) * 0.5f * float(extent.height), c.w};
+}
+
+void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings& view) {
     const glm::mat4 viewMatrix = view.camera.view();
-    const glm::mat4 viewProjection = view.camera.projection(aspect, view.sceneRadius) * viewMatrix;
+    const glm::mat4 worldToClip = viewProjection(view, extent);
     const glm::vec3 eye = view.camera.eye();
     const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
     const VkRect2D scissor{{0, 0}, extent};
@@ -429,7 +442,7 @@ void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings
 
     if (view.showSurface && numTriangles_ > 0 && positions_.buffer) {
         SurfaceConstants c{};
-        std::memcpy(c.viewProjection, glm::value_ptr(viewProjection), sizeof c.viewProjection);
+        std::memcpy(c.viewProjection, glm::value_ptr(worldToClip), sizeof c.viewProjection);
         // The light is given in view space: it turns with the camera.
         const glm::vec3 light = glm::transpose(glm::mat3(viewMatrix)) * view.light.direction;
         const float eye4[4] = {eye.x, eye.y, eye.z, view.stripes};
@@ -453,7 +466,7 @@ void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings
     const bool edges = view.showCage && numEdges_ > 0, points = view.showPoints && numPoints_ > 0;
     if (!edges && !points) return;
     CageConstants c{};
-    std::memcpy(c.viewProjection, glm::value_ptr(viewProjection), sizeof c.viewProjection);
+    std::memcpy(c.viewProjection, glm::value_ptr(worldToClip), sizeof c.viewProjection);
     const float viewport4[4] = {float(extent.width), float(extent.height), 0.5f * view.edgeWidthPixels,
                                 0.5f * view.pointSizePixels};
     // Pulled towards the eye by a fraction of the scene, so that a cage lying on the surface

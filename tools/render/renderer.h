@@ -39,6 +39,12 @@ struct ViewSettings {
     float pointSizePixels = 7.0f;   // cage vertices
 };
 
+// The view's world-to-clip matrix over an image of `extent` (what record() draws with).
+glm::mat4 viewProjection(const ViewSettings& view, VkExtent2D extent);
+// A world point's pixel coordinates under the view (x right, y down, pixel centres at + 0.5) and
+// its clip w (<= 0: behind the eye).
+glm::vec3 toPixel(const ViewSettings& view, VkExtent2D extent, const glm::vec3& world);
+
 class Renderer {
 public:
     // Pipelines for subpass 0 of `renderPass` (one colour attachment, one depth attachment).
@@ -61,6 +67,8 @@ public:
     void uploadCurvature(const std::vector<float>& curvature);
     // The control cage: positions, edges and colours.
     void setCage(const Cage& cage);
+    // New positions for the cage set last (as many), e.g. a deformed cage each frame.
+    void updateCagePositions(const float* positions);
     // A texture for Textured shading; null: the procedural UV checker.
     void setTexture(const Image* image);
 

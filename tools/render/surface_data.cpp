@@ -123,7 +123,7 @@ Cage cageOf(const Topology& level0, const float* positions, const std::vector<in
     }
     for (int v = 0; v < level0.numVertices; ++v) {
         const float s = std::size_t(v) < level0.vertSharpness.size() ? level0.vertSharpness[std::size_t(v)] : 0.0f;
-        cage.pointColors.emplace_back(s > 0.0f ? sharpnessColor(s) : glm::vec3(0.08f, 0.08f, 0.08f), 1.0f);
+        cage.pointColors.emplace_back(s > 0.0f ? sharpnessColor(s) : glm::vec3(0.15f, 0.80f, 0.30f), 1.0f);
     }
     for (int e : selectedEdges)
         if (e >= 0 && std::size_t(e) < cage.edgeColors.size()) cage.edgeColors[std::size_t(e)] = glm::vec4(selectedColor(), 1.0f);
