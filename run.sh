@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(cmake ninja-build g++ libgtest-dev libgmock-dev libeigen3-dev libosd-dev libcli11-dev libtbb-dev libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers pkgconf libtinygltf-dev libmeshoptimizer-dev)
+PACKAGES=(cmake ninja-build g++ libgtest-dev libgmock-dev libeigen3-dev libosd-dev libcli11-dev libtbb-dev libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers pkgconf libtinygltf-dev libmeshoptimizer-dev libstb-dev libglm-dev)
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc)}
 
