@@ -19,8 +19,7 @@ layout(push_constant) uniform View {
     ivec4 params;      // mode, first position float, first normal float, flags
 } view;
 
-const int kHasUVs = 1;
-const int kModeMeanCurvature = 3;
+const int kHasUVs = 1, kHasCurvature = 4;
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
@@ -36,7 +35,7 @@ void main() {
     worldPosition = vec3(positions[p], positions[p + 1], positions[p + 2]);
     worldNormal = vec3(normals[n], normals[n + 1], normals[n + 2]);
     uv = (view.params.w & kHasUVs) != 0 ? uvs[drawVertex] : vec2(0.0);
-    scalar = view.params.x == kModeMeanCurvature ? scalars[v] : 0.0;
+    scalar = (view.params.w & kHasCurvature) != 0 ? scalars[v] : 0.0;
     origin = origins[corner / 3u];
     gl_Position = view.viewProjection * vec4(worldPosition, 1.0);
 }

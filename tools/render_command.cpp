@@ -9,6 +9,7 @@
 
 #include "tools/commands.h"
 #include "tools/render/gpu_device.h"
+#include "tools/render/legend.h"
 #include "tools/render/level_surface.h"
 #include "tools/render/offscreen_target.h"
 #include "tools/render/renderer.h"
@@ -61,8 +62,9 @@ Panel preparePanel(const RenderArgs& args, const io::ObjMesh& mesh, std::optiona
     return p;
 }
 
+// `legend`: with the cage, the sharpness colour code along the bottom.
 Image drawPanel(const RenderArgs& args, const io::ObjMesh& mesh, const Panel& p, render::OffscreenTarget& target,
-                render::Renderer& renderer, const render::ViewSettings& view) {
+                render::Renderer& renderer, const render::ViewSettings& view, bool legend) {
     render::showLevel(renderer, p.refiner, args.level, p.uvs.empty() ? nullptr : p.uvs.data());
     if (p.onDevice)
         renderer.useVertexBuffers(p.onDevice->positions(), p.onDevice->normals());
@@ -77,6 +79,7 @@ Image drawPanel(const RenderArgs& args, const io::ObjMesh& mesh, const Panel& p,
     std::string label = p.scheme ? toString(*p.scheme) : "";
     if (!args.label.empty()) label += (label.empty() ? "" : ", ") + args.label;
     if (!label.empty()) render::drawLabel(image, 8, 8, label, 2, {255, 255, 255});
+    if (args.cage && legend) render::drawSharpnessLegend(image);
     return image;
 }
 
@@ -131,7 +134,8 @@ int runRender(const RenderArgs& args) {
     for (const Panel& p : prepared) view.curvatureRange = std::max(view.curvatureRange, render::curvatureRange(p.curvature));
     if (args.curvatureRange) view.curvatureRange = *args.curvatureRange;
     std::vector<Image> panels;
-    for (const Panel& p : prepared) panels.push_back(drawPanel(args, mesh, p, target, renderer, view));
+    for (const Panel& p : prepared)
+        panels.push_back(drawPanel(args, mesh, p, target, renderer, view, panels.empty()));
     const Image image = panels.size() == 1 ? std::move(panels[0]) : render::sideBySide(panels);
     const std::vector<uint8_t> png = render::encodePng(image);
     io::writeReplacing(args.output, [&png](std::ostream& out) {

@@ -62,9 +62,6 @@ Image sideBySide(const std::vector<Image>& panels) {
     return out;
 }
 
-namespace {
-
-// Blends `color` at `alpha` over the pixels of [x0, x1) x [y0, y1), clipped to the image.
 void fillRect(Image& image, int x0, int y0, int x1, int y1, const std::array<uint8_t, 3>& color, float alpha) {
     x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, image.width), y1 = std::min(y1, image.height);
     for (int y = y0; y < y1; ++y)
@@ -75,21 +72,33 @@ void fillRect(Image& image, int x0, int y0, int x1, int y1, const std::array<uin
         }
 }
 
-}  // namespace
+namespace {
 
-void drawLabel(Image& image, int x, int y, const std::string& text, int scale, const std::array<uint8_t, 3>& color) {
+std::vector<char> cString(const std::string& text) {
     std::vector<char> chars(text.begin(), text.end());
     chars.push_back('\0');
+    return chars;
+}
+
+}  // namespace
+
+std::array<int, 2> labelSize(const std::string& text, int scale) {
+    std::vector<char> chars = cString(text);
+    return {stb_easy_font_width(chars.data()) * scale + 4 * scale, stb_easy_font_height(chars.data()) * scale + 4 * scale};
+}
+
+void drawLabel(Image& image, int x, int y, const std::string& text, int scale, const std::array<uint8_t, 3>& color) {
+    std::vector<char> chars = cString(text);
     // stb_easy_font emits axis-aligned quads (4 vertices of 16 bytes: x, y, z, colour) in font
     // units; a line is about 12 units high.
     std::vector<char> quads(std::size_t(text.size()) * 270 + 1024);
     unsigned char rgba[4] = {255, 255, 255, 255};
     const int numQuads = stb_easy_font_print(0, 0, chars.data(), rgba, quads.data(), int(quads.size()));
-    const int w = stb_easy_font_width(chars.data()), h = stb_easy_font_height(chars.data());
     const int pad = 2 * scale;
     const std::array<uint8_t, 3> backing = color[0] + color[1] + color[2] > 384 ? std::array<uint8_t, 3>{0, 0, 0}
                                                                                    : std::array<uint8_t, 3>{255, 255, 255};
-    fillRect(image, x, y, x + w * scale + 2 * pad, y + h * scale + 2 * pad, backing, 0.55f);
+    const std::array<int, 2> size = labelSize(text, scale);
+    fillRect(image, x, y, x + size[0], y + size[1], backing, 0.55f);
     for (int q = 0; q < numQuads; ++q) {
         float v[16];
         std::memcpy(v, quads.data() + std::size_t(q) * 64, sizeof v);

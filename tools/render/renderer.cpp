@@ -25,7 +25,7 @@ namespace {
 constexpr uint32_t kSurfaceBuffers = 7;  // positions, normals, triangles, vertexOf, uvs, curvature, origins
 constexpr uint32_t kCageBuffers = 4;     // positions, edges, edge colours, point colours
 constexpr VkMemoryPropertyFlags kHostMemory = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-constexpr int32_t kHasUVs = 1, kHasTexture = 2;
+constexpr int32_t kHasUVs = 1, kHasTexture = 2, kHasCurvature = 4;  // shaders/surface.*
 
 // The push constants of shaders/surface.* and shaders/cage_*.vert.
 struct SurfaceConstants {
@@ -371,6 +371,7 @@ void Renderer::setSurface(const DrawBuffers& draw, const float* uvValues, const 
         uvs_.reset();
     }
     numTriangles_ = draw.numTriangles();
+    numVertices_ = draw.numLevelVertices;
     writeSurfaceSet();
 }
 
@@ -451,7 +452,9 @@ void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings
         std::memcpy(c.eye, eye4, sizeof eye4);
         std::memcpy(c.lightDir, light4, sizeof light4);
         std::memcpy(c.lightColor, color4, sizeof color4);
-        const int32_t flags = (hasUVs_ ? kHasUVs : 0) | (texture_ ? kHasTexture : 0);
+        // The curvature is read only in its mode, and only once given.
+        const bool curvature = view.shading == Shading::MeanCurvature && curvature_.size() >= 4 * std::size_t(numVertices_);
+        const int32_t flags = (hasUVs_ ? kHasUVs : 0) | (texture_ ? kHasTexture : 0) | (curvature ? kHasCurvature : 0);
         c.params[0] = int32_t(view.shading);
         c.params[1] = int32_t(positions_.byteOffset / 4);
         c.params[2] = int32_t(normals_.byteOffset / 4);

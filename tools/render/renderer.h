@@ -99,7 +99,7 @@ private:
     detail::DeviceBuffer cagePositions_, cageEdges_, edgeColors_, pointColors_;
     std::unique_ptr<Texture> checker_, texture_;
     VkSampler sampler_ = VK_NULL_HANDLE;
-    int numTriangles_ = 0, numEdges_ = 0, numPoints_ = 0;
+    int numTriangles_ = 0, numVertices_ = 0, numEdges_ = 0, numPoints_ = 0;  // numVertices_: the level's
     bool hasUVs_ = false;
 };
 
