@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -125,6 +126,8 @@ protected:
             GTEST_SKIP() << "no Vulkan device (" << e.what() << "); set QUADTRI_REQUIRE_VULKAN=1 to fail instead";
         }
         pinVulkanLibraries();
+        std::printf("Vulkan device: %s, validation layer %s\n", gpu->deviceName().c_str(),
+                    gpu->validationEnabled() ? "on" : "off");
         if (vulkanRequired()) {
             EXPECT_TRUE(gpu->validationEnabled()) << "the Khronos validation layer is not installed";
         }

@@ -1,7 +1,6 @@
 // `quadtri render IN.obj -o out.png`: the mesh refined by the chosen evaluator on the renderer's
 // own device and drawn offscreen (docs/rendering.md), one labelled panel per scheme of --compare.
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <ostream>
