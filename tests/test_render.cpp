@@ -53,7 +53,8 @@ Scene makeScene(io::ObjMesh mesh, int level, Options base = Options()) {
     const MeshNormalTable fallback = buildMeshNormalTable(s.refiner->faces(level));
     CpuEvaluator::EvalLimitStencils(s.positions.data(), d, nullptr, d, nullptr, d, nullptr, d, s.normals.data(), d,
                                     s.refiner->limitStencils(level), &fallback);
-    if (s.refiner->numFVarChannels() > 0) s.uvs = evaluateChannelLevels(*s.refiner, 0, s.mesh.uvs, 2)[std::size_t(level)];
+    if (s.refiner->numFVarChannels() > 0)
+        s.uvs = evaluateChannelLevels(*s.refiner, 0, s.mesh.uvs, 2)[std::size_t(level)];
     return s;
 }
 
@@ -89,10 +90,13 @@ int silhouettePixels(const Scene& s, const render::ViewSettings& view, int w, in
     const std::vector<glm::vec2> p = project(s.positions, view, w, h);
     std::vector<uint8_t> covered(std::size_t(w) * std::size_t(h), 0);
     const DrawBuffers draw = buildDrawBuffers(s.refiner->faces(s.level));
-    auto edge = [](glm::vec2 a, glm::vec2 b, glm::vec2 q) { return (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x); };
+    auto edge = [](glm::vec2 a, glm::vec2 b, glm::vec2 q) {
+        return (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x);
+    };
     for (int t = 0; t < draw.numTriangles(); ++t) {
         glm::vec2 v[3];
-        for (int k = 0; k < 3; ++k) v[k] = p[std::size_t(draw.vertexOf[draw.triangles[3 * std::size_t(t) + std::size_t(k)]])];
+        for (int k = 0; k < 3; ++k)
+            v[k] = p[std::size_t(draw.vertexOf[draw.triangles[3 * std::size_t(t) + std::size_t(k)]])];
         const int x0 = std::max(0, int(std::floor(std::min({v[0].x, v[1].x, v[2].x}))));
         const int x1 = std::min(w - 1, int(std::ceil(std::max({v[0].x, v[1].x, v[2].x}))));
         const int y0 = std::max(0, int(std::floor(std::min({v[0].y, v[1].y, v[2].y}))));
@@ -139,7 +143,8 @@ protected:
         renderer.reset();
         target.reset();
         gpu.reset();
-        EXPECT_EQ(render::GpuDevice::totalValidationMessageCount(), 0) << "the validation layer reported problems (above)";
+        EXPECT_EQ(render::GpuDevice::totalValidationMessageCount(), 0)
+            << "the validation layer reported problems (above)";
     }
 
     // The scene's level drawn with its CPU positions and normals.
@@ -147,7 +152,8 @@ protected:
         render::showLevel(*renderer, *s.refiner, s.level, s.uvs.empty() ? nullptr : s.uvs.data());
         renderer->uploadVertices(s.positions.data(), s.normals.data(), int(s.positions.size() / 3));
         renderer->setCage(render::cageOf(s.refiner->level(0), s.mesh.positions.data()));
-        return target->render(kBackground, [&](VkCommandBuffer cmd, VkExtent2D extent) { renderer->record(cmd, extent, view); });
+        return target->render(kBackground,
+                              [&](VkCommandBuffer cmd, VkExtent2D extent) { renderer->record(cmd, extent, view); });
     }
 
     std::unique_ptr<render::GpuDevice> gpu;
@@ -179,11 +185,12 @@ TEST_F(RenderTest, TheVulkanEvaluatorsBuffersDrawTheSameImage) {
     const Image cpu = draw(s, view);
     const render::DeviceSurface onDevice(gpu->context(), *s.refiner, s.level, s.mesh.positions, false);
     renderer->useVertexBuffers(onDevice.positions(), onDevice.normals());
-    const Image vulkan =
-        target->render(kBackground, [&](VkCommandBuffer cmd, VkExtent2D extent) { renderer->record(cmd, extent, view); });
+    const Image vulkan = target->render(
+        kBackground, [&](VkCommandBuffer cmd, VkExtent2D extent) { renderer->record(cmd, extent, view); });
     int different = 0;
     for (std::size_t i = 0; i < cpu.rgba.size(); i += 4)
-        different += std::abs(int(cpu.rgba[i]) - int(vulkan.rgba[i])) > 2 || cpu.rgba[i + 1] != vulkan.rgba[i + 1] ? 1 : 0;
+        different +=
+            std::abs(int(cpu.rgba[i]) - int(vulkan.rgba[i])) > 2 || cpu.rgba[i + 1] != vulkan.rgba[i + 1] ? 1 : 0;
     EXPECT_LT(different, kSize * kSize / 1000) << "pixels that differ between the CPU and Vulkan evaluators' buffers";
     EXPECT_GT(surfacePixels(vulkan), kSize * kSize / 10);
 }
@@ -209,7 +216,8 @@ io::ObjMesh tube(int rings, float sharpness) {
         obj << "f " << top << " " << at(rings, k + 1) << " " << at(rings, k) << "\n";
     }
     if (sharpness > 0)
-        for (int k = 0; k < 8; ++k) obj << "t crease 2/1/0 " << at(0, k) - 1 << " " << at(0, k + 1) - 1 << " " << sharpness << "\n";
+        for (int k = 0; k < 8; ++k)
+            obj << "t crease 2/1/0 " << at(0, k) - 1 << " " << at(0, k + 1) - 1 << " " << sharpness << "\n";
     std::istringstream in(obj.str());
     return io::parseObj(in, "tube.obj");
 }
@@ -257,7 +265,8 @@ TEST_F(RenderTest, ACreaseChangesThePictureNearItAndNowhereFarFromIt) {
         ASSERT_GT(far, 3 * kNear) << "the view separates the rim from the tube's middle";
         EXPECT_GT(farSurface, 2000) << "the tube's upper half is in view";
         EXPECT_GT(near, 100) << toString(scheme) << ": pixels changed within " << kNear << " px of the crease";
-        EXPECT_EQ(farAway, 0) << toString(scheme) << ": pixels changed beyond " << far << " px of the crease, of " << total;
+        EXPECT_EQ(farAway, 0) << toString(scheme) << ": pixels changed beyond " << far << " px of the crease, of "
+                              << total;
     }
 }
 
@@ -367,7 +376,8 @@ TEST(RenderData, PickingFindsTheEdgeAndVertexUnderThePixel) {
     for (int v = 0; v < s.mesh.numVertices(); ++v) {
         const int picked = render::pickVertex(cage, view, extent, p[std::size_t(v)] + glm::vec2(1.0f, 1.0f));
         ASSERT_GE(picked, 0) << "vertex " << v;
-        EXPECT_LE(glm::length(p[std::size_t(picked)] - p[std::size_t(v)]), 3.0f) << "vertex " << v << " picked " << picked;
+        EXPECT_LE(glm::length(p[std::size_t(picked)] - p[std::size_t(v)]), 3.0f)
+            << "vertex " << v << " picked " << picked;
     }
     EXPECT_EQ(render::pickEdge(cage, view, extent, glm::vec2(0.0f, 0.0f)), -1) << "nothing at the corner";
     EXPECT_EQ(render::pickVertex(cage, view, extent, glm::vec2(0.0f, 0.0f)), -1) << "nothing at the corner";
@@ -421,7 +431,8 @@ TEST(RenderData, MeanCurvatureOfASphereIsOneOverItsRadius) {
     for (std::size_t i = 0; i < xyz.size(); ++i) normals[i] = xyz[i] / float(kRadius);
     const std::vector<float> h = render::meanCurvature(sphere.faces(0), xyz.data(), normals.data());
     for (int i = 2; i < kRings - 2; ++i)
-        for (int k = 0; k < kSegments; k += 7) EXPECT_NEAR(h[std::size_t(at(i, k))], 1.0 / kRadius, 0.02) << i << "," << k;
+        for (int k = 0; k < kSegments; k += 7)
+            EXPECT_NEAR(h[std::size_t(at(i, k))], 1.0 / kRadius, 0.02) << i << "," << k;
     // Turned inside out (normals inwards), the sign flips.
     for (float& n : normals) n = -n;
     EXPECT_NEAR(render::meanCurvature(sphere.faces(0), xyz.data(), normals.data())[std::size_t(at(kRings / 2, 0))],

@@ -30,7 +30,7 @@ render::Shading shadingNamed(const std::string& name) {
 struct Panel {
     std::optional<Scheme> scheme;  // labelled when set
     Refiner refiner;
-    std::vector<float> uvs;        // per value of face-varying channel 0 at the level
+    std::vector<float> uvs;  // per value of face-varying channel 0 at the level
     std::optional<render::DeviceSurface> onDevice;
     Surface host;                  // CPU / oneTBB; with Vulkan only for the mean curvature
     std::vector<float> curvature;  // mean-curvature shading only
@@ -57,7 +57,8 @@ Panel preparePanel(const RenderArgs& args, const io::ObjMesh& mesh, std::optiona
                                  NormalKind::Limit);
     }
     if (curvature)
-        p.curvature = render::meanCurvature(p.refiner.faces(args.level), p.host.positions.data(), p.host.normals.data());
+        p.curvature =
+            render::meanCurvature(p.refiner.faces(args.level), p.host.positions.data(), p.host.normals.data());
     return p;
 }
 
@@ -68,7 +69,8 @@ Image drawPanel(const RenderArgs& args, const io::ObjMesh& mesh, const Panel& p,
     if (p.onDevice)
         renderer.useVertexBuffers(p.onDevice->positions(), p.onDevice->normals());
     else
-        renderer.uploadVertices(p.host.positions.data(), p.host.normals.data(), p.refiner.faces(args.level).numVertices());
+        renderer.uploadVertices(p.host.positions.data(), p.host.normals.data(),
+                                p.refiner.faces(args.level).numVertices());
     if (!p.curvature.empty()) renderer.uploadCurvature(p.curvature);
     renderer.setCage(render::cageOf(p.refiner.level(0), mesh.positions.data()));
     Image image = render::downsample(
@@ -130,18 +132,19 @@ int runRender(const RenderArgs& args) {
     for (Scheme scheme : args.compare) prepared.push_back(preparePanel(args, mesh, scheme, ctx, curvature));
     // One colour range for every panel, so that they compare.
     view.curvatureRange = 0.0f;
-    for (const Panel& p : prepared) view.curvatureRange = std::max(view.curvatureRange, render::curvatureRange(p.curvature));
+    for (const Panel& p : prepared)
+        view.curvatureRange = std::max(view.curvatureRange, render::curvatureRange(p.curvature));
     if (args.curvatureRange) view.curvatureRange = *args.curvatureRange;
     std::vector<Image> panels;
-    for (const Panel& p : prepared)
-        panels.push_back(drawPanel(args, mesh, p, target, renderer, view, panels.empty()));
+    for (const Panel& p : prepared) panels.push_back(drawPanel(args, mesh, p, target, renderer, view, panels.empty()));
     const Image image = panels.size() == 1 ? std::move(panels[0]) : render::sideBySide(panels);
     const std::vector<uint8_t> png = render::encodePng(image);
     io::writeReplacing(args.output, [&png](std::ostream& out) {
         out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
     });
     if (gpu->validationMessageCount() > 0)
-        std::fprintf(stderr, "quadtri: the Vulkan validation layer reported %d problems\n", gpu->validationMessageCount());
+        std::fprintf(stderr, "quadtri: the Vulkan validation layer reported %d problems\n",
+                     gpu->validationMessageCount());
     std::printf("%s: level %d, %s shading, %dx%d -> %s (Vulkan device %s)\n", args.mesh.input.c_str(), args.level,
                 args.shading.c_str(), image.width, image.height, args.output.c_str(), gpu->deviceName().c_str());
     return 0;

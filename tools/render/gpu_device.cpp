@@ -100,8 +100,10 @@ void GpuDevice::createInstance(const GpuDeviceOptions& options) {
         layers.push_back(kValidationLayer);
     }
 
-    auto msg = detail::vkStruct<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
-    msg.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    auto msg =
+        detail::vkStruct<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+    msg.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     msg.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     msg.pfnUserCallback = &onMessage;
@@ -116,8 +118,10 @@ void GpuDevice::createInstance(const GpuDeviceOptions& options) {
     info.ppEnabledExtensionNames = extensions.data();
     const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
-        throw VulkanError("no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); install one, "
-                          "e.g. Debian's mesa-vulkan-drivers for the lavapipe CPU driver", r);
+        throw VulkanError(
+            "no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); install one, "
+            "e.g. Debian's mesa-vulkan-drivers for the lavapipe CPU driver",
+            r);
     if (r == VK_ERROR_EXTENSION_NOT_PRESENT)
         throw VulkanError("the Vulkan driver lacks an instance extension the window needs", r);
     vkCheck(r, "vkCreateInstance");

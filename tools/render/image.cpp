@@ -67,7 +67,8 @@ void fillRect(Image& image, int x0, int y0, int x1, int y1, const std::array<uin
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
             uint8_t* p = image.pixel(x, y);
-            for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::lround(p[c] * (1.0f - alpha) + color[std::size_t(c)] * alpha));
+            for (int c = 0; c < 3; ++c)
+                p[c] = uint8_t(std::lround(p[c] * (1.0f - alpha) + color[std::size_t(c)] * alpha));
             p[3] = 255;
         }
 }
@@ -84,7 +85,8 @@ std::vector<char> cString(const std::string& text) {
 
 std::array<int, 2> labelSize(const std::string& text, int scale) {
     std::vector<char> chars = cString(text);
-    return {stb_easy_font_width(chars.data()) * scale + 4 * scale, stb_easy_font_height(chars.data()) * scale + 4 * scale};
+    return {stb_easy_font_width(chars.data()) * scale + 4 * scale,
+            stb_easy_font_height(chars.data()) * scale + 4 * scale};
 }
 
 void drawLabel(Image& image, int x, int y, const std::string& text, int scale, const std::array<uint8_t, 3>& color) {
@@ -95,8 +97,8 @@ void drawLabel(Image& image, int x, int y, const std::string& text, int scale, c
     unsigned char rgba[4] = {255, 255, 255, 255};
     const int numQuads = stb_easy_font_print(0, 0, chars.data(), rgba, quads.data(), int(quads.size()));
     const int pad = 2 * scale;
-    const std::array<uint8_t, 3> backing = color[0] + color[1] + color[2] > 384 ? std::array<uint8_t, 3>{0, 0, 0}
-                                                                                   : std::array<uint8_t, 3>{255, 255, 255};
+    const std::array<uint8_t, 3> backing =
+        color[0] + color[1] + color[2] > 384 ? std::array<uint8_t, 3>{0, 0, 0} : std::array<uint8_t, 3>{255, 255, 255};
     const std::array<int, 2> size = labelSize(text, scale);
     fillRect(image, x, y, x + size[0], y + size[1], backing, 0.55f);
     for (int q = 0; q < numQuads; ++q) {

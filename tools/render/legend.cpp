@@ -12,7 +12,7 @@ namespace quadtri::render {
 
 namespace {
 
-const std::pair<float, const char*> kEntries[] = {{0.0f, "0"}, {1.0f, "1"}, {2.5f, "2.5"},
+const std::pair<float, const char*> kEntries[] = {{0.0f, "0"}, {1.0f, "1"},   {2.5f, "2.5"},
                                                   {5.0f, "5"}, {7.5f, "7.5"}, {kInfiniteSharpness, "inf"}};
 
 int legendWidth(int scale) {
@@ -35,7 +35,8 @@ void drawSharpnessLegend(Image& image) {
     x += title[0] + 2 * scale;
     for (const auto& [sharpness, text] : kEntries) {
         const glm::vec3 c = sharpnessColor(sharpness) * 255.0f;
-        const std::array<uint8_t, 3> rgb{uint8_t(std::lround(c.r)), uint8_t(std::lround(c.g)), uint8_t(std::lround(c.b))};
+        const std::array<uint8_t, 3> rgb{uint8_t(std::lround(c.r)), uint8_t(std::lround(c.g)),
+                                         uint8_t(std::lround(c.b))};
         fillRect(image, x, y + scale, x + rowHeight - 2 * scale, y + rowHeight - scale, rgb);
         x += rowHeight;
         drawLabel(image, x, y, text, scale, {255, 255, 255});

@@ -10,9 +10,9 @@ namespace quadtri::render {
 void showLevel(Renderer& renderer, const Refiner& refiner, int level, const float* uvValues) {
     const LevelFaces faces = refiner.faces(level);
     const bool uvs = uvValues && refiner.numFVarChannels() > 0;
-    const DrawBuffers draw = uvs ? buildDrawBuffers(faces, {refiner.fvarValues(0, level).begin()},
-                                                    {refiner.numFVarValues(0, level)})
-                                 : buildDrawBuffers(faces);
+    const DrawBuffers draw =
+        uvs ? buildDrawBuffers(faces, {refiner.fvarValues(0, level).begin()}, {refiner.numFVarValues(0, level)})
+            : buildDrawBuffers(faces);
     renderer.setSurface(draw, uvs ? uvValues : nullptr,
                         triangleOrigins(faces, refiner.faces(0), rootFaces(refiner, level), draw));
 }

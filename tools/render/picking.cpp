@@ -7,7 +7,8 @@ namespace quadtri::render {
 namespace {
 
 glm::vec3 pointOf(const Cage& cage, uint32_t v) {
-    return {cage.positions[3 * std::size_t(v)], cage.positions[3 * std::size_t(v) + 1], cage.positions[3 * std::size_t(v) + 2]};
+    return {cage.positions[3 * std::size_t(v)], cage.positions[3 * std::size_t(v) + 1],
+            cage.positions[3 * std::size_t(v) + 2]};
 }
 
 }  // namespace

@@ -24,7 +24,8 @@ namespace {
 
 constexpr uint32_t kSurfaceBuffers = 7;  // positions, normals, triangles, vertexOf, uvs, curvature, origins
 constexpr uint32_t kCageBuffers = 4;     // positions, edges, edge colours, point colours
-constexpr VkMemoryPropertyFlags kHostMemory = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+constexpr VkMemoryPropertyFlags kHostMemory =
+    VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
 constexpr int32_t kHasUVs = 1, kHasTexture = 2, kHasCurvature = 4;  // shaders/surface.*
 
 // The push constants of shaders/surface.* and shaders/cage_*.vert.
@@ -56,7 +57,8 @@ VkDescriptorSetLayout createSetLayout(VkDevice device, uint32_t buffers, bool wi
     for (uint32_t b = 0; b < buffers; ++b)
         bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr});
     if (withSampler)
-        bindings.push_back({buffers, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+        bindings.push_back(
+            {buffers, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
     auto info = vkStruct<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
     info.bindingCount = uint32_t(bindings.size());
     info.pBindings = bindings.data();
@@ -89,27 +91,33 @@ VkPipeline createPipeline(VkDevice device, VkRenderPass renderPass, VkSampleCoun
         stages[i].module = i == 0 ? vertex : fragment;
         stages[i].pName = "main";
     }
-    auto vertexInput = vkStruct<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    auto assembly = vkStruct<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    auto vertexInput =
+        vkStruct<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+    auto assembly =
+        vkStruct<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     auto viewport = vkStruct<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
-    auto raster = vkStruct<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+    auto raster =
+        vkStruct<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = VK_CULL_MODE_NONE;
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
-    auto multisample = vkStruct<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    auto multisample =
+        vkStruct<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
     multisample.rasterizationSamples = samples;
-    auto depth = vkStruct<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+    auto depth =
+        vkStruct<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
     depth.depthTestEnable = VK_TRUE;
     depth.depthWriteEnable = VK_TRUE;
     depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     VkPipelineColorBlendAttachmentState blendAttachment{};
     blendAttachment.colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    auto blend = vkStruct<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+    auto blend =
+        vkStruct<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
     blend.attachmentCount = 1;
     blend.pAttachments = &blendAttachment;
     const VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
@@ -132,7 +140,8 @@ VkPipeline createPipeline(VkDevice device, VkRenderPass renderPass, VkSampleCoun
     info.renderPass = renderPass;
     info.subpass = 0;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    vkCheck(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateGraphicsPipelines");
+    vkCheck(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+            "vkCreateGraphicsPipelines");
     return pipeline;
 }
 
@@ -193,8 +202,8 @@ struct Renderer::Texture {
             barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
             barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
             barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
-                                 nullptr, 1, &barrier);
+            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr,
+                                 0, nullptr, 1, &barrier);
             VkBufferImageCopy copy{};
             copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             copy.imageExtent = ii.extent;
@@ -259,9 +268,8 @@ void Renderer::createLayouts() {
     VkDevice device = ctx_.device();
     surfaceLayout_ = createSetLayout(device, kSurfaceBuffers, true);
     cageLayout_ = createSetLayout(device, kCageBuffers, false);
-    surfacePipelineLayout_ = createPipelineLayout(device, surfaceLayout_,
-                                                  VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                                                  sizeof(SurfaceConstants));
+    surfacePipelineLayout_ = createPipelineLayout(
+        device, surfaceLayout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, sizeof(SurfaceConstants));
     cagePipelineLayout_ = createPipelineLayout(device, cageLayout_, VK_SHADER_STAGE_VERTEX_BIT, sizeof(CageConstants));
 }
 
@@ -331,7 +339,8 @@ void Renderer::writeSurfaceSet() {
                  {positions_.buffer, normals_.buffer, triangles_.buffer(), vertexOf_.buffer(), uvs_.buffer(),
                   curvature_.buffer(), origins_.buffer()},
                  empty_.buffer());
-    VkDescriptorImageInfo image{sampler_, (texture_ ? texture_ : checker_)->view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo image{sampler_, (texture_ ? texture_ : checker_)->view,
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     auto w = vkStruct<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     w.dstSet = surfaceSet_;
     w.dstBinding = kSurfaceBuffers;
@@ -353,7 +362,8 @@ detail::DeviceBuffer Renderer::hostBuffer(const void* data, std::size_t bytes) c
     return buffer;
 }
 
-void Renderer::setSurface(const DrawBuffers& draw, const float* uvValues, const std::vector<uint32_t>& triangleOrigins) {
+void Renderer::setSurface(const DrawBuffers& draw, const float* uvValues,
+                          const std::vector<uint32_t>& triangleOrigins) {
     if (int(triangleOrigins.size()) != draw.numTriangles())
         throw std::invalid_argument("Renderer::setSurface: one origin per triangle expected");
     triangles_ = hostBuffer(draw.triangles.data(), draw.triangles.size() * sizeof(uint32_t));
@@ -453,14 +463,16 @@ void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings
         std::memcpy(c.lightDir, light4, sizeof light4);
         std::memcpy(c.lightColor, color4, sizeof color4);
         // The curvature is read only in its mode, and only once given.
-        const bool curvature = view.shading == Shading::MeanCurvature && curvature_.size() >= 4 * std::size_t(numVertices_);
+        const bool curvature =
+            view.shading == Shading::MeanCurvature && curvature_.size() >= 4 * std::size_t(numVertices_);
         const int32_t flags = (hasUVs_ ? kHasUVs : 0) | (texture_ ? kHasTexture : 0) | (curvature ? kHasCurvature : 0);
         c.params[0] = int32_t(view.shading);
         c.params[1] = int32_t(positions_.byteOffset / 4);
         c.params[2] = int32_t(normals_.byteOffset / 4);
         c.params[3] = flags;
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, surfacePipeline_);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, surfacePipelineLayout_, 0, 1, &surfaceSet_, 0, nullptr);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, surfacePipelineLayout_, 0, 1, &surfaceSet_, 0,
+                                nullptr);
         vkCmdPushConstants(cmd, surfacePipelineLayout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                            sizeof c, &c);
         vkCmdDraw(cmd, uint32_t(3 * numTriangles_), 1, 0, 0);

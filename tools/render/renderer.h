@@ -25,7 +25,14 @@
 
 namespace quadtri::render {
 
-enum class Shading : int32_t { Smooth = 0, Flat = 1, ReflectionLines = 2, MeanCurvature = 3, FaceType = 4, Textured = 5 };
+enum class Shading : int32_t {
+    Smooth = 0,
+    Flat = 1,
+    ReflectionLines = 2,
+    MeanCurvature = 3,
+    FaceType = 4,
+    Textured = 5
+};
 
 struct ViewSettings {
     Camera camera;
@@ -33,10 +40,10 @@ struct ViewSettings {
     float sceneRadius = 1.0f;  // bounds the depth range: the radius of the scene's sphere around camera.target
     Shading shading = Shading::Smooth;
     bool showSurface = true, showCage = true, showPoints = false;
-    float stripes = 16.0f;          // reflection lines: stripes over the half circle of directions
-    float curvatureRange = 1.0f;    // mean curvature: |H| mapped to the ends of the colour map
-    float edgeWidthPixels = 2.0f;   // cage edges
-    float pointSizePixels = 7.0f;   // cage vertices
+    float stripes = 16.0f;         // reflection lines: stripes over the half circle of directions
+    float curvatureRange = 1.0f;   // mean curvature: |H| mapped to the ends of the colour map
+    float edgeWidthPixels = 2.0f;  // cage edges
+    float pointSizePixels = 7.0f;  // cage vertices
 };
 
 // The view's world-to-clip matrix over an image of `extent` (what record() draws with).

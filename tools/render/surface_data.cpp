@@ -43,7 +43,8 @@ std::vector<float> meanCurvature(const LevelFaces& faces, const float* positions
     std::vector<glm::dvec3> laplacian(nv, glm::dvec3(0.0));
     std::vector<double> area(nv, 0.0);
     auto at = [positions](int v) {
-        return glm::dvec3(positions[3 * std::size_t(v)], positions[3 * std::size_t(v) + 1], positions[3 * std::size_t(v) + 2]);
+        return glm::dvec3(positions[3 * std::size_t(v)], positions[3 * std::size_t(v) + 1],
+                          positions[3 * std::size_t(v) + 2]);
     };
     auto addTriangle = [&](int a, int b, int c, double weight) {
         const int v[3] = {a, b, c};
@@ -119,16 +120,19 @@ Cage cageOf(const Topology& level0, const float* positions, const std::vector<in
         cage.edges.push_back(uint32_t(level0.edgeVerts[2 * std::size_t(e)]));
         cage.edges.push_back(uint32_t(level0.edgeVerts[2 * std::size_t(e) + 1]));
         const bool boundary = (level0.edgeFlags[std::size_t(e)] & kEdgeBoundary) != 0;
-        cage.edgeColors.emplace_back(sharpnessColor(boundary ? kInfiniteSharpness : level0.edgeSharpness[std::size_t(e)]), 1.0f);
+        cage.edgeColors.emplace_back(
+            sharpnessColor(boundary ? kInfiniteSharpness : level0.edgeSharpness[std::size_t(e)]), 1.0f);
     }
     for (int v = 0; v < level0.numVertices; ++v) {
         const float s = std::size_t(v) < level0.vertSharpness.size() ? level0.vertSharpness[std::size_t(v)] : 0.0f;
         cage.pointColors.emplace_back(s > 0.0f ? sharpnessColor(s) : glm::vec3(0.15f, 0.80f, 0.30f), 1.0f);
     }
     for (int e : selectedEdges)
-        if (e >= 0 && std::size_t(e) < cage.edgeColors.size()) cage.edgeColors[std::size_t(e)] = glm::vec4(selectedColor(), 1.0f);
+        if (e >= 0 && std::size_t(e) < cage.edgeColors.size())
+            cage.edgeColors[std::size_t(e)] = glm::vec4(selectedColor(), 1.0f);
     for (int v : selectedVertices)
-        if (v >= 0 && std::size_t(v) < cage.pointColors.size()) cage.pointColors[std::size_t(v)] = glm::vec4(selectedColor(), 1.0f);
+        if (v >= 0 && std::size_t(v) < cage.pointColors.size())
+            cage.pointColors[std::size_t(v)] = glm::vec4(selectedColor(), 1.0f);
     return cage;
 }
 
