@@ -179,6 +179,25 @@ TEST_F(RenderTest, CornersAreBackgroundAndCoverageMatchesTheProjectedSilhouette)
     }
 }
 
+TEST_F(RenderTest, ARectangleOfTheFramebufferHoldsItsOwnView) {
+    // The left half only, e.g. one of two schemes side by side in a window.
+    const Scene s = sceneOf("mixed/mixed_torus.obj", 2);
+    render::ViewSettings view = viewOf(s, render::Shading::Smooth);
+    view.camera.frame(render::boundingSphere(s.mesh.positions.data(), s.mesh.numVertices()), 0.5f);
+    render::showLevel(*renderer, *s.refiner, s.level, nullptr);
+    renderer->uploadVertices(s.positions.data(), s.normals.data(), int(s.positions.size() / 3));
+    const VkRect2D left{{0, 0}, {kSize / 2, kSize}};
+    const Image image = target->render(
+        kBackground, [&](VkCommandBuffer cmd, VkExtent2D) { renderer->record(cmd, left, view); });
+    int inRight = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = kSize / 2; x < kSize; ++x) inRight += isBackground(image.pixel(x, y)) ? 0 : 1;
+    EXPECT_EQ(inRight, 0) << "pixels drawn outside the rectangle";
+    const int expected = silhouettePixels(s, view, kSize / 2, kSize);
+    EXPECT_GT(expected, kSize * kSize / 20);
+    EXPECT_NEAR(surfacePixels(image), expected, 0.02 * expected);
+}
+
 TEST_F(RenderTest, TheVulkanEvaluatorsBuffersDrawTheSameImage) {
     const Scene s = sceneOf("mixed/mixed_torus.obj", 3);
     const render::ViewSettings view = viewOf(s, render::Shading::Smooth);

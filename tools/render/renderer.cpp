@@ -443,13 +443,18 @@ glm::vec3 toPixel(const ViewSettings& view, VkExtent2D extent, const glm::vec3& 
 }
 
 void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings& view) {
+    record(cmd, VkRect2D{{0, 0}, extent}, view);
+}
+
+void Renderer::record(VkCommandBuffer cmd, const VkRect2D& area, const ViewSettings& view) {
+    const VkExtent2D extent = area.extent;
     const glm::mat4 viewMatrix = view.camera.view();
     const glm::mat4 worldToClip = viewProjection(view, extent);
     const glm::vec3 eye = view.camera.eye();
-    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
+    const VkViewport viewport{float(area.offset.x), float(area.offset.y), float(extent.width), float(extent.height),
+                              0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdSetScissor(cmd, 0, 1, &area);
 
     if (view.showSurface && numTriangles_ > 0 && positions_.buffer) {
         SurfaceConstants c{};

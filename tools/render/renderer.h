@@ -81,6 +81,9 @@ public:
 
     // Draws the visible parts of the view into the current subpass, over the whole of `extent`.
     void record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings& view);
+    // The same into the rectangle `area` of the framebuffer (e.g. one of two schemes side by
+    // side); the view's aspect is the rectangle's.
+    void record(VkCommandBuffer cmd, const VkRect2D& area, const ViewSettings& view);
 
 private:
     struct Texture;
