@@ -201,17 +201,28 @@ TEST_F(RenderTest, ARectangleOfTheFramebufferHoldsItsOwnView) {
 TEST_F(RenderTest, TheVulkanEvaluatorsBuffersDrawTheSameImage) {
     const Scene s = sceneOf("mixed/mixed_torus.obj", 3);
     const render::ViewSettings view = viewOf(s, render::Shading::Smooth);
-    const Image cpu = draw(s, view);
-    const render::DeviceSurface onDevice(gpu->context(), *s.refiner, s.level, s.mesh.positions, false);
-    renderer->useVertexBuffers(onDevice.positions(), onDevice.normals());
-    const Image vulkan = target->render(
-        kBackground, [&](VkCommandBuffer cmd, VkExtent2D extent) { renderer->record(cmd, extent, view); });
-    int different = 0;
-    for (std::size_t i = 0; i < cpu.rgba.size(); i += 4)
-        different +=
-            std::abs(int(cpu.rgba[i]) - int(vulkan.rgba[i])) > 2 || cpu.rgba[i + 1] != vulkan.rgba[i + 1] ? 1 : 0;
-    EXPECT_LT(different, kSize * kSize / 1000) << "pixels that differ between the CPU and Vulkan evaluators' buffers";
-    EXPECT_GT(surfacePixels(vulkan), kSize * kSize / 10);
+    // With --limit the CPU draws the limit positions it evaluates from the level's.
+    std::vector<float> limit(s.positions.size());
+    const BufferDescriptor d(0, 3, 3);
+    CpuEvaluator::EvalLimitStencils(s.positions.data(), d, limit.data(), d, nullptr, d, nullptr, d, nullptr, d,
+                                    s.refiner->limitStencils(s.level));
+    for (bool onLimit : {false, true}) {
+        render::showLevel(*renderer, *s.refiner, s.level, nullptr);
+        renderer->uploadVertices(onLimit ? limit.data() : s.positions.data(), s.normals.data(),
+                                 int(s.positions.size() / 3));
+        auto record = [&](VkCommandBuffer cmd, VkExtent2D extent) { renderer->record(cmd, extent, view); };
+        const Image cpu = target->render(kBackground, record);
+        const render::DeviceSurface onDevice(gpu->context(), *s.refiner, s.level, s.mesh.positions, onLimit);
+        renderer->useVertexBuffers(onDevice.positions(), onDevice.normals());
+        const Image vulkan = target->render(kBackground, record);
+        int different = 0;
+        for (std::size_t i = 0; i < cpu.rgba.size(); i += 4)
+            different +=
+                std::abs(int(cpu.rgba[i]) - int(vulkan.rgba[i])) > 2 || cpu.rgba[i + 1] != vulkan.rgba[i + 1] ? 1 : 0;
+        EXPECT_LT(different, kSize * kSize / 1000)
+            << "pixels that differ between the CPU and Vulkan evaluators' buffers" << (onLimit ? ", on the limit" : "");
+        EXPECT_GT(surfacePixels(vulkan), kSize * kSize / 10);
+    }
 }
 
 // A capped tube along y: `rings` + 1 rings of 8 vertices (y from -2 to 2, radius 1) joined by

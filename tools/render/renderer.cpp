@@ -382,6 +382,9 @@ void Renderer::setSurface(const DrawBuffers& draw, const float* uvValues,
     }
     numTriangles_ = draw.numTriangles();
     numVertices_ = draw.numLevelVertices;
+    // New triangles, new vertices: the old vertex buffers (maybe freed by now) are let go.
+    positions_ = normals_ = VulkanBufferRef{};
+    ownPositions_.reset(), ownNormals_.reset();
     writeSurfaceSet();
 }
 

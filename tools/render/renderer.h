@@ -61,11 +61,14 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     // The level's triangles: `draw` over its vertices, UVs per draw vertex's value (2 floats per
-    // value of draw.valueOf[0]; null without UVs), and per triangle its FaceOrigin.
+    // value of draw.valueOf[0]; null without UVs), and per triangle its FaceOrigin. Forgets the
+    // vertex buffers: give the level's with useVertexBuffers or uploadVertices next (the
+    // surface is not drawn until then).
     void setSurface(const DrawBuffers& draw, const float* uvValues, const std::vector<uint32_t>& triangleOrigins);
     // The positions and normals the draw reads (3 floats per level vertex from each ref's
     // byteOffset, a multiple of 4): the caller's storage buffers, e.g. an evaluator's outputs,
-    // kept alive by the caller while the renderer uses them.
+    // which the caller keeps alive until they are replaced (setSurface, useVertexBuffers,
+    // uploadVertices) or the renderer is destroyed.
     void useVertexBuffers(const VulkanBufferRef& positions, const VulkanBufferRef& normals);
     // Or host data (CPU, oneTBB evaluators) copied into the renderer's own buffers, which the
     // draw then reads; numVertices = the level's vertices.
