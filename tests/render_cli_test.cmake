@@ -88,7 +88,7 @@ run(0 render "${TORUS}" --level 1 --size 50x40 --compare catmull-clark,stam-loop
     -o "${WORK}/compare.png")
 expect_png("${WORK}/compare.png" 150 40)
 # Supersampled: the size asked for, not K times it.
-run(0 render "${TORUS}" --level 1 --size 40x30 --supersample 3 --label "level 1" -o "${WORK}/supersampled.png")
+run(0 render "${TORUS}" --level 1 --size 40x30 --supersample 3 --label "level 1, naïve\ttab" -o "${WORK}/supersampled.png")
 expect_png("${WORK}/supersampled.png" 40 30)
 # A texture (a PNG written above), the crease override, the surface hidden.
 run(0 render "${CYLINDER}" --level 1 --size 32x32 --shading textured --texture "${WORK}/torus.png"
@@ -99,7 +99,8 @@ expect_contains("${ERR}" "has no UVs")
 # Bad input: the flag's own message, exit 2, nothing written.
 foreach(bad "--size;0x0" "--size;64" "--size;64x48x3" "--shading;glossy" "--compare;catmull-clark,nope"
             "--pitch;95" "--light-color;2,0,0" "--light-dir;1,2" "--evaluator;gpu" "--level;11"
-            "--crease-sharpness;-1" "--stripes;0" "--supersample;5")
+            "--crease-sharpness;-1" "--stripes;0" "--supersample;5"
+            "--light-dir;0,0,0")
   run(2 render "${TORUS}" ${bad} -o "${WORK}/bad.png")
 endforeach()
 run(2 render "${TORUS}" --compare nope -o "${WORK}/bad.png")
@@ -109,6 +110,8 @@ expect_contains("${ERR}" "missing.png: cannot read the image")
 file(WRITE "${WORK}/broken.obj" "v 0 0 0\nv 1 0 0\nf 1 2 7\n")
 run(2 render "${WORK}/broken.obj" -o "${WORK}/bad.png")
 expect_contains("${ERR}" "broken.obj:3")
+run(2 render "${TORUS}" --size 8192x8192 --supersample 4 --level 0 -o "${WORK}/bad.png")
+expect_contains("${ERR}" "pixels: the Vulkan device draws 1 to")
 run(2 render "${TORUS}" --size 32x32 -o "${WORK}/no/such/folder/x.png")
 expect_contains("${ERR}" "cannot write file")
 if(EXISTS "${WORK}/bad.png")

@@ -112,22 +112,26 @@ CLI::Option* addLevel(CLI::App& cmd, const char* name, int& level, const char* h
     return cmd.add_option(name, level, help)->check(CLI::Range(minLevel, cli::kMaxLevel))->capture_default_str();
 }
 
-// "x,y,z" (or "r,g,b") as three floats, each within [lo, hi]; nullopt otherwise.
-std::optional<std::array<float, 3>> parseTriple(const std::string& s, float lo, float hi) {
+// "x,y,z" (or "r,g,b") as three floats, each within [lo, hi] and, with `nonZero`, not all 0;
+// nullopt otherwise.
+std::optional<std::array<float, 3>> parseTriple(const std::string& s, float lo, float hi, bool nonZero) {
     std::array<float, 3> v{};
     char tail = 0;
     if (std::sscanf(s.c_str(), "%f,%f,%f%c", &v[0], &v[1], &v[2], &tail) != 3) return std::nullopt;
     for (float x : v)
         if (!std::isfinite(x) || x < lo || x > hi) return std::nullopt;
+    if (nonZero && v[0] == 0 && v[1] == 0 && v[2] == 0) return std::nullopt;
     return v;
 }
 
-CLI::Validator tripleCheck(const char* what, float lo, float hi) {
+CLI::Validator tripleCheck(const char* what, float lo, float hi, bool nonZero) {
     return CLI::Validator(
-        [what, lo, hi](std::string& s) {
-            return parseTriple(s, lo, hi) ? std::string()
-                                          : "'" + s + "' is not " + what + ": expected three numbers a,b,c in [" +
-                                                std::to_string(lo) + ", " + std::to_string(hi) + "]";
+        [what, lo, hi, nonZero](std::string& s) {
+            if (parseTriple(s, lo, hi, nonZero)) return std::string();
+            char range[96];
+            std::snprintf(range, sizeof range, "%g, %g", double(lo), double(hi));
+            return "'" + s + "' is not " + what + ": expected three numbers a,b,c in [" + range + "]" +
+                   (nonZero ? ", not all 0" : "");
         },
         "X,Y,Z");
 }
@@ -169,13 +173,13 @@ void addRenderFlags(CLI::App& cmd, cli::RenderArgs& args, const std::map<std::st
             },
             "WxH"));
     cmd.add_option_function<std::string>(
-           "--light-dir", [&args](const std::string& s) { args.lightDirection = *parseTriple(s, -1e6f, 1e6f); },
+           "--light-dir", [&args](const std::string& s) { args.lightDirection = *parseTriple(s, -1e6f, 1e6f, true); },
            "Direction towards the light in view space: x right, y up, z towards the viewer (default -0.3,0.5,0.8)")
-        ->check(tripleCheck("a direction", -1e6f, 1e6f));
+        ->check(tripleCheck("a direction", -1e6f, 1e6f, true));
     cmd.add_option_function<std::string>(
-           "--light-color", [&args](const std::string& s) { args.lightColor = *parseTriple(s, 0.0f, 1.0f); },
+           "--light-color", [&args](const std::string& s) { args.lightColor = *parseTriple(s, 0.0f, 1.0f, false); },
            "Light colour r,g,b in [0, 1] (default 1,1,1)")
-        ->check(tripleCheck("a colour", 0.0f, 1.0f));
+        ->check(tripleCheck("a colour", 0.0f, 1.0f, false));
     cmd.add_option("--texture", args.texture, "PNG or JPEG image for --shading textured (default: a checker)");
     cmd.add_option_function<std::string>(
            "--evaluator", [&args, evaluators](const std::string& s) { args.evaluator = evaluators.at(s); },

@@ -75,8 +75,11 @@ void fillRect(Image& image, int x0, int y0, int x1, int y1, const std::array<uin
 
 namespace {
 
+// The font has printable ASCII only (it indexes its table by the character): anything else,
+// tabs and newlines included, becomes '?'.
 std::vector<char> cString(const std::string& text) {
-    std::vector<char> chars(text.begin(), text.end());
+    std::vector<char> chars;
+    for (char c : text) chars.push_back(c >= 32 && c <= 126 ? c : '?');
     chars.push_back('\0');
     return chars;
 }

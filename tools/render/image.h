@@ -33,7 +33,7 @@ Image sideBySide(const std::vector<Image>& panels);
 void fillRect(Image& image, int x0, int y0, int x1, int y1, const std::array<uint8_t, 3>& color, float alpha = 1.0f);
 // The size drawLabel gives `text` at `scale`, its backing box included.
 std::array<int, 2> labelSize(const std::string& text, int scale);
-// Draws `text` (ASCII) with its top-left corner at (x, y), `scale` pixels per font unit, over a
+// Draws `text` (printable ASCII; other bytes show as '?') with its top-left corner at (x, y), `scale` pixels per font unit, over a
 // translucent backing box so that it reads on any shading.
 void drawLabel(Image& image, int x, int y, const std::string& text, int scale, const std::array<uint8_t, 3>& color);
 

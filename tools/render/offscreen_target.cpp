@@ -1,6 +1,8 @@
 #include "tools/render/offscreen_target.h"
 
+#include <algorithm>
 #include <cstring>
+#include <string>
 
 namespace quadtri::render {
 
@@ -17,6 +19,12 @@ VkFormat pickDepthFormat(VkPhysicalDevice physicalDevice) {
 
 OffscreenTarget::OffscreenTarget(VulkanContext& ctx, uint32_t width, uint32_t height)
     : ctx_(ctx), width_(width), height_(height), depthFormat_(pickDepthFormat(ctx.physicalDevice())) {
+    const VkPhysicalDeviceLimits& limits = ctx_.properties().limits;
+    const uint32_t largest =
+        std::min({limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxFramebufferHeight});
+    if (width == 0 || height == 0 || width > largest || height > largest)
+        throw VulkanError("an image of " + std::to_string(width) + "x" + std::to_string(height) +
+                          " pixels: the Vulkan device draws 1 to " + std::to_string(largest) + " per side");
     try {
         color_ = createAttachment(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                   VK_IMAGE_ASPECT_COLOR_BIT);
