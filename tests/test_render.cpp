@@ -14,6 +14,9 @@
 #include <quadtri/far/draw_buffers.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/vulkan_evaluator.h>
+#include <quadtri/osd/vulkan_limit_evaluator.h>
+#include <quadtri/osd/vulkan_limit_tables.h>
 #include "tests/test_support.h"
 #include "tests/vulkan_test_support.h"
 #include "tools/render/gpu_device.h"
@@ -187,8 +190,8 @@ TEST_F(RenderTest, ARectangleOfTheFramebufferHoldsItsOwnView) {
     render::showLevel(*renderer, *s.refiner, s.level, nullptr);
     renderer->uploadVertices(s.positions.data(), s.normals.data(), int(s.positions.size() / 3));
     const VkRect2D left{{0, 0}, {kSize / 2, kSize}};
-    const Image image = target->render(
-        kBackground, [&](VkCommandBuffer cmd, VkExtent2D) { renderer->record(cmd, left, view); });
+    const Image image =
+        target->render(kBackground, [&](VkCommandBuffer cmd, VkExtent2D) { renderer->record(cmd, left, view); });
     int inRight = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = kSize / 2; x < kSize; ++x) inRight += isBackground(image.pixel(x, y)) ? 0 : 1;
@@ -223,6 +226,43 @@ TEST_F(RenderTest, TheVulkanEvaluatorsBuffersDrawTheSameImage) {
             << "pixels that differ between the CPU and Vulkan evaluators' buffers" << (onLimit ? ", on the limit" : "");
         EXPECT_GT(surfacePixels(vulkan), kSize * kSize / 10);
     }
+}
+
+TEST_F(RenderTest, OneSubmissionEvaluatesAndDrawsAFrame) {
+    // The real-time loop's frame: the factorized table applied to the control points, the limit
+    // normals from the result, the draw of both buffers, all in one command buffer.
+    const Scene s = sceneOf("mixed/mixed_torus.obj", 3);
+    const render::ViewSettings view = viewOf(s, render::Shading::Smooth);
+    const Image expected = draw(s, view);
+    VulkanContext& ctx = gpu->context();
+    const VulkanStencilTable table(ctx, s.refiner->factorizedStencils(s.level));
+    const VulkanLimitStencilTable limit(ctx, s.refiner->limitStencils(s.level));
+    const VulkanMeshNormalTable fallback(ctx, buildMeshNormalTable(s.refiner->faces(s.level)));
+    const int n = int(s.positions.size() / 3);
+    VulkanVertexBuffer control = VulkanVertexBuffer::create(ctx, s.mesh.numVertices(), 3);
+    control.updateData(s.mesh.positions.data(), 0, s.mesh.numVertices());
+    VulkanVertexBuffer positions = VulkanVertexBuffer::create(ctx, n, 3);
+    VulkanVertexBuffer normals = VulkanVertexBuffer::create(ctx, n, 3);
+    VulkanEvaluator evaluator(ctx);
+    VulkanLimitEvaluator limitEvaluator(ctx);
+    render::showLevel(*renderer, *s.refiner, s.level, nullptr);
+    renderer->useVertexBuffers({positions.buffer(), 0}, {normals.buffer(), 0});
+    const BufferDescriptor d(0, 3, 3);
+    const Image frame = target->render(
+        kBackground, [&](VkCommandBuffer cmd, VkExtent2D extent) { renderer->record(cmd, extent, view); },
+        [&](VkCommandBuffer cmd) {
+            evaluator.EvalStencils(cmd, control, d, positions, d, table);
+            limitEvaluator.EvalLimitStencils(cmd, {positions.buffer(), 0}, d, {}, d, {}, d, {}, d,
+                                             {normals.buffer(), 0}, d, limit, &fallback);
+            render::barrierBeforeDraw(cmd);
+        });
+    evaluator.resetDescriptorSets();
+    limitEvaluator.resetDescriptorSets();
+    int different = 0;
+    for (std::size_t i = 0; i < frame.rgba.size(); i += 4)
+        different += std::abs(int(frame.rgba[i]) - int(expected.rgba[i])) > 2 ? 1 : 0;
+    EXPECT_LT(different, kSize * kSize / 1000) << "pixels that differ from the CPU's frame";
+    EXPECT_GT(surfacePixels(frame), kSize * kSize / 10);
 }
 
 // A capped tube along y: `rings` + 1 rings of 8 vertices (y from -2 to 2, radius 1) joined by

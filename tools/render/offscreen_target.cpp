@@ -138,8 +138,10 @@ void OffscreenTarget::createRenderPass() {
 }
 
 Image OffscreenTarget::render(const std::array<float, 4>& background,
-                              const std::function<void(VkCommandBuffer, VkExtent2D)>& draw) {
+                              const std::function<void(VkCommandBuffer, VkExtent2D)>& draw,
+                              const std::function<void(VkCommandBuffer)>& beforePass) {
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        if (beforePass) beforePass(cmd);
         VkClearValue clears[2];
         std::memcpy(clears[0].color.float32, background.data(), sizeof(float) * 4);
         clears[1].depthStencil = {1.0f, 0};

@@ -34,10 +34,11 @@ public:
     VkFormat depthFormat() const { return depthFormat_; }
     VkExtent2D extent() const { return {width_, height_}; }
 
-    // Begins the render pass (clearing to `background`, RGBA in 0..1), lets `draw` record inside
-    // it, ends it, copies the colour image out, submits, waits and returns the pixels, row 0 at
-    // the top.
-    Image render(const std::array<float, 4>& background, const std::function<void(VkCommandBuffer, VkExtent2D)>& draw);
+    // Records `beforePass` (if set: e.g. the frame's evaluation), begins the render pass
+    // (clearing to `background`, RGBA in 0..1), lets `draw` record inside it, ends it, copies the
+    // colour image out, submits it all at once, waits and returns the pixels, row 0 at the top.
+    Image render(const std::array<float, 4>& background, const std::function<void(VkCommandBuffer, VkExtent2D)>& draw,
+                 const std::function<void(VkCommandBuffer)>& beforePass = {});
 
 private:
     struct Attachment {

@@ -435,6 +435,15 @@ void Renderer::setTexture(const Image* image) {
     writeSurfaceSet();
 }
 
+void barrierBeforeDraw(VkCommandBuffer cmd) {
+    auto barrier = vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 1, &barrier, 0,
+                         nullptr, 0, nullptr);
+}
+
 glm::mat4 viewProjection(const ViewSettings& view, VkExtent2D extent) {
     const float aspect = float(extent.width) / float(std::max(extent.height, 1u));
     return view.camera.projection(aspect, view.sceneRadius) * view.camera.view();
@@ -454,8 +463,8 @@ void Renderer::record(VkCommandBuffer cmd, const VkRect2D& area, const ViewSetti
     const glm::mat4 viewMatrix = view.camera.view();
     const glm::mat4 worldToClip = viewProjection(view, extent);
     const glm::vec3 eye = view.camera.eye();
-    const VkViewport viewport{float(area.offset.x), float(area.offset.y), float(extent.width), float(extent.height),
-                              0.0f, 1.0f};
+    const VkViewport viewport{
+        float(area.offset.x), float(area.offset.y), float(extent.width), float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
 

@@ -52,6 +52,11 @@ glm::mat4 viewProjection(const ViewSettings& view, VkExtent2D extent);
 // its clip w (<= 0: behind the eye).
 glm::vec3 toPixel(const ViewSettings& view, VkExtent2D extent, const glm::vec3& world);
 
+// Makes compute-shader and transfer writes recorded before it (an evaluator's outputs, uploads)
+// visible to the draw's vertex and fragment shaders. Record it outside a render pass, before the
+// pass begins, unless the pass's own subpass dependency does this (OffscreenTarget's does).
+void barrierBeforeDraw(VkCommandBuffer cmd);
+
 class Renderer {
 public:
     // Pipelines for subpass 0 of `renderPass` (one colour attachment, one depth attachment).
