@@ -381,6 +381,28 @@ TEST_F(RenderTest, ReflectionLinesAreTwoTonedStripes) {
     }
 }
 
+TEST_F(RenderTest, FaceTypeShowsTheTriangleAndQuadHalvesOfTheTorus) {
+    // mixed_torus: quads on one half, triangles on the other; orange (red > blue) for faces from
+    // triangles, blue (blue > red) for faces from quads, nothing green.
+    const Scene s = sceneOf("mixed/mixed_torus.obj", 2);
+    const Image image = draw(s, viewOf(s, render::Shading::FaceType));
+    int orange = 0, blue = 0, other = 0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        if (isBackground(&image.rgba[i])) continue;
+        const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+        if (r > b + 20 && r >= g) {
+            ++orange;
+        } else if (b > r + 20 && b >= g) {
+            ++blue;
+        } else {
+            ++other;
+        }
+    }
+    EXPECT_GT(orange, 3000);
+    EXPECT_GT(blue, 3000);
+    EXPECT_LT(other, (orange + blue) / 50) << "pixels neither orange nor blue (highlights)";
+}
+
 TEST_F(RenderTest, TexturedShadingShowsTheCheckerThroughTheUVs) {
     const Scene s = sceneOf("osd/catmark_cube.obj", 2);
     ASSERT_FALSE(s.uvs.empty()) << "catmark_cube has UVs";
