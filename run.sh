@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(cmake ninja-build g++ libgtest-dev libgmock-dev libeigen3-dev libosd-dev libcli11-dev libtbb-dev libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers pkgconf libtinygltf-dev libmeshoptimizer-dev)
+PACKAGES=(cmake ninja-build g++ libgtest-dev libgmock-dev libeigen3-dev libosd-dev libcli11-dev libtbb-dev libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers pkgconf libtinygltf-dev libmeshoptimizer-dev libstb-dev libglm-dev)
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc)}
 
@@ -44,16 +44,9 @@ has_command() {
     "$BUILD_DIR/bin/quadtri" --help | grep -E "^ +$1 " >/dev/null  # grep reads it all: no SIGPIPE
 }
 
-# The README's pictures, rendered by `quadtri render` into $BUILD_DIR/demo/: run here once the
-# CLI has the command (the renderer's part of the demo).
+# The README's pictures (tools/render_pictures.sh, `quadtri render`) into $BUILD_DIR/demo/.
 demo_pictures() {
-    if ! has_command render; then
-        echo "run.sh: this quadtri has no render command yet: no pictures in $BUILD_DIR/demo/"
-        return 0
-    fi
-    mkdir -p "$BUILD_DIR/demo"
-    "$BUILD_DIR/bin/quadtri" render "$DEMO_CAGE" -o "$BUILD_DIR/demo/mixed_limb.png"
-    echo "run.sh: pictures in $BUILD_DIR/demo/"
+    tools/render_pictures.sh "$BUILD_DIR/bin/quadtri" "$BUILD_DIR/demo"
 }
 
 # The viewer on the bundled cage with a display (DISPLAY or WAYLAND_DISPLAY), else its command.

@@ -58,8 +58,6 @@ void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, i
     throw io::ObjError(mesh.name + text);
 }
 
-// Defaults, then the file's tags, then explicit flags. The scheme comes first: whether the
-// file's smoothtriangles tag applies depends on it.
 Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     Options base;
     if (args.scheme) base.scheme = *args.scheme;
@@ -171,6 +169,12 @@ io::TriangleMesh triangleMeshOf(const LevelFaces& faces, const Surface& surface,
 }
 
 }  // namespace
+
+const std::vector<std::string>& renderShadings() {
+    static const std::vector<std::string> names{"smooth", "flat", "reflection-lines", "mean-curvature", "face-type",
+                                                "textured"};
+    return names;
+}
 
 int runRefine(const RefineArgs& args) {
     if (args.output.empty()) throw io::ObjError("-o: the output file name is empty");

@@ -2,6 +2,7 @@
 // lets TopologyError, io::ObjError and other exceptions escape to main(), which reports them.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -27,6 +28,17 @@ struct MeshArgs {
     std::optional<std::size_t> memoryBudget;        // default: Options::memoryBudgetBytes
     bool smoothTriangles = false;                   // --smooth-triangles (catmull-clark only); else the file's tag
 };
+
+// The file, refused with an ObjError when it has no faces; its warnings printed.
+io::ObjMesh loadMesh(const MeshArgs& args);
+// Defaults, then the file's tags, then explicit flags. The scheme comes first: whether the
+// file's smoothtriangles tag applies depends on it.
+Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh);
+// The analyzer over a file's mesh, with its UVs as face-varying channel 0 when the file has
+// them; topology errors name the file line of the face or tag at fault.
+Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options);
+// Refuses non-finite refined positions, naming the level and scheme (a mesh the scheme cannot take).
+void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, int level, Scheme scheme);
 
 // Largest refinement level accepted on the command line (the memory budget may refuse less).
 constexpr int kMaxLevel = 10;
@@ -111,16 +123,34 @@ struct DemoArgs {
     std::optional<realtime::TableRoute> route;  // default: realtime::fastestSurfaceTables' choice
 };
 
-// The steps every subcommand shares (tools/commands.cpp). The mesh of a file (its warnings
-// printed; no faces refused), the options its tags and the flags ask for, the analyzer over it
-// (topology errors in the file's numbering), and a check that refined positions are finite.
-io::ObjMesh loadMesh(const MeshArgs& args);
-Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh);
-Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options);
-void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, int level, Scheme scheme);
+// `quadtri render` (tools/render_command.cpp; docs/rendering.md).
+struct RenderArgs {
+    MeshArgs mesh;
+    int level = 3;
+    std::string output;
+    std::string shading = "smooth";  // a name of renderShadings()
+    bool cage = false, points = false, hideSurface = false;
+    bool limit = false;                // vertices on the limit surface
+    float yaw = 30.0f, pitch = 20.0f;  // degrees
+    int width = 800, height = 600;     // of each panel
+    std::array<float, 3> lightDirection{-0.3f, 0.5f, 0.8f};  // towards the light, view space
+    std::array<float, 3> lightColor{1.0f, 1.0f, 1.0f};
+    std::string texture;               // PNG or JPEG for textured shading; empty: a checker
+    EvaluatorKind evaluator = EvaluatorKind::Cpu;
+    std::optional<float> creaseSharpness;  // replaces every `t crease` sharpness of the file
+    std::vector<Scheme> compare;           // one panel per scheme, labelled
+    float stripes = 16.0f;                 // reflection lines over the half circle
+    std::optional<float> curvatureRange;   // mean curvature at the colour map's ends; default: data's 95th percentile
+    std::string label;                     // written in the top-left corner (with --compare: after the scheme)
+    int supersample = 1;                   // drawn k times larger, each k x k block averaged
+};
+// The shading names `--shading` takes, in help order.
+const std::vector<std::string>& renderShadings();
 
 int runRefine(const RefineArgs& args);
 int runInfo(const InfoArgs& args);
 int runDemo(const DemoArgs& args);
+// Exit status 2, with the reason on stderr, without a Vulkan device (or in a build without Vulkan).
+int runRender(const RenderArgs& args);
 
 }  // namespace quadtri::cli

@@ -1,10 +1,15 @@
 // quadtri: refine OBJ meshes with the quad/triangle analyzer, report on them, time them.
 #include <CLI/CLI.hpp>
 
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <map>
 #include <new>
+#include <optional>
+#include <sstream>
 
 #include <quadtri/far/options.h>
 #include <quadtri/version.h>
@@ -107,6 +112,115 @@ CLI::Option* addLevel(CLI::App& cmd, const char* name, int& level, const char* h
     return cmd.add_option(name, level, help)->check(CLI::Range(minLevel, cli::kMaxLevel))->capture_default_str();
 }
 
+// "x,y,z" (or "r,g,b") as three floats, each within [lo, hi] and, with `nonZero`, not all 0;
+// nullopt otherwise.
+std::optional<std::array<float, 3>> parseTriple(const std::string& s, float lo, float hi, bool nonZero) {
+    std::array<float, 3> v{};
+    char tail = 0;
+    if (std::sscanf(s.c_str(), "%f,%f,%f%c", &v[0], &v[1], &v[2], &tail) != 3) return std::nullopt;
+    for (float x : v)
+        if (!std::isfinite(x) || x < lo || x > hi) return std::nullopt;
+    if (nonZero && v[0] == 0 && v[1] == 0 && v[2] == 0) return std::nullopt;
+    return v;
+}
+
+CLI::Validator tripleCheck(const char* what, float lo, float hi, bool nonZero) {
+    return CLI::Validator(
+        [what, lo, hi, nonZero](std::string& s) {
+            if (parseTriple(s, lo, hi, nonZero)) return std::string();
+            char range[96];
+            std::snprintf(range, sizeof range, "%g, %g", double(lo), double(hi));
+            return "'" + s + "' is not " + what + ": expected three numbers a,b,c in [" + range + "]" +
+                   (nonZero ? ", not all 0" : "");
+        },
+        "X,Y,Z");
+}
+
+void addRenderFlags(CLI::App& cmd, cli::RenderArgs& args, const std::map<std::string, cli::EvaluatorKind>& evaluators) {
+    addMeshFlags(cmd, args.mesh);
+    addLevel(cmd, "--level,-l", args.level, "Refinement level drawn");
+    cmd.add_option("-o,--output", args.output, "Output PNG file")->required();
+    std::map<std::string, int> shadings;
+    for (const std::string& name : cli::renderShadings()) shadings.emplace(name, 0);
+    cmd.add_option("--shading", args.shading,
+                   "smooth (limit normals), flat (face normals), reflection-lines (zebra stripes), mean-curvature "
+                   "(blue concave, red convex), face-type (orange: from a control triangle, blue: from a quad), "
+                   "textured (the file's UVs: --texture, else a checker)")
+        ->check(oneOf(shadings, "shading"))
+        ->capture_default_str();
+    cmd.add_flag("--cage", args.cage, "Draw the control edges, coloured by sharpness (docs/rendering.md)");
+    cmd.add_flag("--points", args.points, "Draw the control vertices, coloured by corner sharpness");
+    cmd.add_flag("--no-surface", args.hideSurface, "Do not draw the refined surface");
+    cmd.add_flag("--limit", args.limit, "Move the vertices onto the limit surface");
+    cmd.add_option("--yaw", args.yaw, "Camera angle about the vertical axis, degrees")
+        ->check(CLI::Range(-360.0f, 360.0f))
+        ->capture_default_str();
+    cmd.add_option("--pitch", args.pitch, "Camera angle above the horizon, degrees")
+        ->check(CLI::Range(-89.0f, 89.0f))
+        ->capture_default_str();
+    cmd.add_option_function<std::string>(
+           "--size",
+           [&args](const std::string& s) { std::sscanf(s.c_str(), "%dx%d", &args.width, &args.height); },
+           "Image size WxH of each panel (default 800x600)")
+        ->type_name("WxH")
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                int w = 0, h = 0;
+                char tail = 0;
+                const bool ok = std::sscanf(s.c_str(), "%dx%d%c", &w, &h, &tail) == 2 && w >= 16 && h >= 16 &&
+                                w <= 8192 && h <= 8192;
+                return ok ? std::string() : "'" + s + "' is not a size: expected WxH, each 16 to 8192, e.g. 800x600";
+            },
+            "WxH"));
+    cmd.add_option_function<std::string>(
+           "--light-dir", [&args](const std::string& s) { args.lightDirection = *parseTriple(s, -1e6f, 1e6f, true); },
+           "Direction towards the light in view space: x right, y up, z towards the viewer (default -0.3,0.5,0.8)")
+        ->check(tripleCheck("a direction", -1e6f, 1e6f, true));
+    cmd.add_option_function<std::string>(
+           "--light-color", [&args](const std::string& s) { args.lightColor = *parseTriple(s, 0.0f, 1.0f, false); },
+           "Light colour r,g,b in [0, 1] (default 1,1,1)")
+        ->check(tripleCheck("a colour", 0.0f, 1.0f, false));
+    cmd.add_option("--texture", args.texture, "PNG or JPEG image for --shading textured (default: a checker)");
+    cmd.add_option_function<std::string>(
+           "--evaluator", [&args, evaluators](const std::string& s) { args.evaluator = evaluators.at(s); },
+           "Stencil evaluator: cpu, tbb, or vulkan (on the renderer's device, its buffers drawn directly)")
+        ->check(oneOf(evaluators, "evaluator"));
+    cmd.add_option("--crease-sharpness", args.creaseSharpness,
+                   "Replace the sharpness of every 't crease' of the file (10 and above: infinite)")
+        ->check(CLI::NonNegativeNumber);
+    cmd.add_option_function<std::string>(
+           "--compare",
+           [&args](const std::string& s) {
+               std::stringstream list(s);
+               for (std::string name; std::getline(list, name, ',');) args.compare.push_back(*schemeNamed(name));
+           },
+           "Schemes s1,s2,... side by side, one labelled panel each")
+        ->type_name("S1,S2,...")
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                std::stringstream list(s);
+                int count = 0;
+                for (std::string name; std::getline(list, name, ',');) {
+                    if (!schemeNamed(name)) return "unknown scheme '" + name + "' in --compare";
+                    ++count;
+                }
+                return count ? std::string() : std::string("--compare needs at least one scheme");
+            },
+            "S1,S2,..."));
+    cmd.add_option("--stripes", args.stripes, "Reflection lines: stripes over the half circle of directions")
+        ->check(CLI::Range(1.0f, 200.0f))
+        ->capture_default_str();
+    cmd.add_option("--supersample", args.supersample,
+                   "Anti-aliasing: draw K times wider and higher and average each K x K block")
+        ->check(CLI::Range(1, 4))
+        ->capture_default_str();
+    cmd.add_option("--label", args.label,
+                   "Text written in the image's top-left corner (with --compare, after each scheme's name)");
+    cmd.add_option("--curvature-range", args.curvatureRange,
+                   "Mean curvature shown at the colour map's ends (default: the 95th percentile of |H|)")
+        ->check(CLI::PositiveNumber);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -173,6 +287,10 @@ int main(int argc, char** argv) {
             "table over the last level")
         ->check(oneOf(routes, "table route"));
 
+    cli::RenderArgs render;
+    CLI::App* renderCmd = app.add_subcommand("render", "Draw the refined surface offscreen with Vulkan and write a PNG");
+    addRenderFlags(*renderCmd, render, evaluators);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -181,10 +299,14 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    const std::string& input = *refineCmd ? refine.mesh.input : *infoCmd ? info.mesh.input : demo.mesh.input;
+    const std::string& input = *refineCmd ? refine.mesh.input
+                               : *infoCmd   ? info.mesh.input
+                               : *renderCmd ? render.mesh.input
+                                            : demo.mesh.input;
     try {
         if (*refineCmd) return cli::runRefine(refine);
         if (*infoCmd) return cli::runInfo(info);
+        if (*renderCmd) return cli::runRender(render);
         return cli::runDemo(demo);
     } catch (const io::ObjError& e) {
         std::cerr << "quadtri: " << e.what() << "\n";  // already "file:line: problem"

@@ -1,0 +1,6 @@
+#version 450
+// The cage's edges and points: their colour as given.
+layout(location = 0) in vec3 color;
+layout(location = 0) out vec4 outColor;
+
+void main() { outColor = vec4(color, 1.0); }
