@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # quadtri's commands:
-#   ./run.sh demo   install missing Debian packages, build (Release, build/), refine a bundled mesh
+#   ./run.sh demo   install missing Debian packages, build the quadtri CLI only (Release, build/), time
+#                   the real-time loop on the bundled cage, then the pictures and the viewer
 #   ./run.sh test   the same set-up, then every test through ctest
 #   ./run.sh fuzz [obj|topology]   also clang; build the libFuzzer targets (build-fuzz/), run each
 # Environment: BUILD_DIR (default build), CMAKE_ARGS (extra configure flags), JOBS; for fuzz:
@@ -30,16 +31,45 @@ install_missing() {
     apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
+# build [TARGET...]: configure, then build the targets (default: everything).
 build() {
     cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release ${CMAKE_ARGS:-}
-    cmake --build "$BUILD_DIR" -j "$JOBS"
+    cmake --build "$BUILD_DIR" -j "$JOBS" ${1:+--target "$@"}
+}
+
+DEMO_CAGE=data/mixed_limb.obj
+
+# The README's pictures, rendered by `quadtri render` into $BUILD_DIR/demo/: run here once the
+# CLI has the command (the renderer's part of the demo).
+demo_pictures() {
+    if ! "$BUILD_DIR/bin/quadtri" render --help >/dev/null 2>&1; then
+        echo "run.sh: this quadtri has no render command yet: no pictures in $BUILD_DIR/demo/"
+        return 0
+    fi
+    mkdir -p "$BUILD_DIR/demo"
+    "$BUILD_DIR/bin/quadtri" render "$DEMO_CAGE" -o "$BUILD_DIR/demo/mixed_limb.png"
+    echo "run.sh: pictures in $BUILD_DIR/demo/"
+}
+
+# The viewer on the bundled cage with a display (DISPLAY or WAYLAND_DISPLAY), else its command.
+demo_viewer() {
+    local view=("$BUILD_DIR/bin/quadtri" view "$DEMO_CAGE")
+    if ! "$BUILD_DIR/bin/quadtri" view --help >/dev/null 2>&1; then
+        echo "run.sh: this quadtri has no viewer yet; once it has, look at the cage with: ${view[*]}"
+    elif [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+        "${view[@]}"
+    else
+        echo "run.sh: no display (DISPLAY, WAYLAND_DISPLAY unset); to look at the cage: ${view[*]}"
+    fi
 }
 
 case "${1:-}" in
 demo)
     install_missing
-    build
-    "$BUILD_DIR/bin/quadtri" demo data/mixed_torus.obj --levels 3 --out-dir "$BUILD_DIR/demo"
+    build quadtri_cli  # the tests and bench are ./run.sh test's
+    "$BUILD_DIR/bin/quadtri" demo "$DEMO_CAGE" --level 3
+    demo_pictures
+    demo_viewer
     ;;
 test)
     install_missing

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,7 +11,6 @@
 
 #include <quadtri/far/draw_buffers.h>
 #include <quadtri/far/refiner.h>
-#include <quadtri/osd/cpu_evaluator.h>
 #include "tools/gltf_io.h"
 #include "tools/obj_io.h"
 #include "tools/vertex_cache.h"
@@ -45,8 +43,6 @@ Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options) {
     }
 }
 
-namespace {
-
 // Finite input can still overflow: a scheme with weights of both signs sums terms larger than the
 // result. The error names the vertex in the output file's numbering.
 void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, int level, Scheme scheme) {
@@ -61,8 +57,6 @@ void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, i
                   level, size_t(bad - positions.begin()) / 3 + 1, double(*bad), double(largest), toString(scheme));
     throw io::ObjError(mesh.name + text);
 }
-
-}  // namespace
 
 Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh) {
     Options base;
@@ -98,10 +92,6 @@ SharpEdges countSharpEdges(const Topology& t) {
         count.infinite += t.edgeSharpness[e] >= kInfiniteSharpness;
     }
     return count;
-}
-
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void printBase(const Topology& t, const Options& options) {
@@ -257,55 +247,6 @@ int runInfo(const InfoArgs& args) {
         }
         std::printf("| %d | %d | %d | %d | %d | %zu | %s |%s\n", L, t.numVertices, outputFaces(LevelFaces(t)), sharp,
                     perLevel.numStencils(), perLevel.bytes(), factorized.c_str(), channelValues(refiner, L).c_str());
-    }
-    return 0;
-}
-
-int runDemo(const DemoArgs& args) {
-    if (args.outDir.empty()) throw io::ObjError("--out-dir: the folder name is empty");
-    io::ObjMesh mesh = loadMesh(args.mesh);
-    Options options = makeOptions(args.mesh, mesh);
-    std::error_code ec;
-    std::filesystem::create_directories(args.outDir, ec);
-    if (ec) throw io::ObjError(args.outDir + ": cannot create the output folder (" + ec.message() + ")");
-    const std::string stem = std::filesystem::path(args.mesh.input).stem().string();
-
-    const VulkanTimingPtr vulkan = openVulkanTiming();
-    std::printf("| level | vertices | faces | stencils | table bytes | analyzer ms | eval ms | vulkan eval ms |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-    for (int L = 1; L <= args.levels; ++L) {
-        auto start = std::chrono::steady_clock::now();
-        Refiner refiner = makeRefiner(mesh, options);
-        refiner.refineUniform(L);
-        StencilTable table = refiner.factorizedStencils(L);
-        double analyzerMs = msSince(start);
-
-        std::vector<double> evalMs;
-        std::vector<float> positions(size_t(table.numStencils()) * 3);
-        for (int run = 0; run < 7; ++run) {
-            start = std::chrono::steady_clock::now();
-            CpuEvaluator::EvalStencils(mesh.positions.data(), BufferDescriptor(0, 3, 3), positions.data(),
-                                       BufferDescriptor(0, 3, 3), table);
-            evalMs.push_back(msSince(start));
-        }
-        std::nth_element(evalMs.begin(), evalMs.begin() + 3, evalMs.end());
-
-        checkFinite(positions, mesh, L, options.scheme);
-        const LevelFaces faces = refiner.faces(L);
-        char vulkanMs[32] = "-";
-        if (vulkan) std::snprintf(vulkanMs, sizeof vulkanMs, "%.3f", vulkanEvalMs(*vulkan, table, mesh.positions, 7));
-        std::printf("| %d | %d | %d | %d | %zu | %.3f | %.3f | %s |\n", L, faces.numVertices(), outputFaces(faces),
-                    table.numStencils(), table.bytes(), analyzerMs, evalMs[3], vulkanMs);
-        std::fflush(stdout);
-        // The UVs, where the file has them, through the channel's per-level tables (untimed).
-        std::vector<float> uvs;
-        io::ObjUVs objUVs;
-        if (refiner.numFVarChannels() > 0) {
-            uvs = std::move(evaluateLevels(EvaluatorKind::Cpu, {fvarLevels(refiner, 0, L, mesh.uvs, 2)})[0]);
-            objUVs = {uvs.data(), refiner.numFVarValues(0, L), refiner.fvarValues(0, L).begin()};
-        }
-        io::writeObj((std::filesystem::path(args.outDir) / (stem + "_level" + std::to_string(L) + ".obj")).string(),
-                     positions.data(), faces, nullptr, objUVs);
     }
     return 0;
 }

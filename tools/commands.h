@@ -13,6 +13,8 @@
 #include <quadtri/far/refiner.h>
 #include <quadtri/far/stencil_table.h>
 #include "tools/obj_io.h"
+#include "tools/realtime/frame_evaluator.h"
+#include "tools/realtime/surface_tables.h"
 
 namespace quadtri::cli {
 
@@ -35,6 +37,8 @@ Options makeOptions(const MeshArgs& args, const io::ObjMesh& mesh);
 // The analyzer over a file's mesh, with its UVs as face-varying channel 0 when the file has
 // them; topology errors name the file line of the face or tag at fault.
 Refiner makeRefiner(const io::ObjMesh& mesh, const Options& options);
+// Refuses non-finite refined positions, naming the level and scheme (a mesh the scheme cannot take).
+void checkFinite(const std::vector<float>& positions, const io::ObjMesh& mesh, int level, Scheme scheme);
 
 // Largest refinement level accepted on the command line (the memory budget may refuse less).
 constexpr int kMaxLevel = 10;
@@ -91,16 +95,10 @@ std::optional<std::vector<std::vector<float>>> evaluateLevelsOnVulkan(const std:
 // The same as evaluateSurface on a headless Vulkan device, or nothing without one (saying why).
 std::optional<Surface> evaluateSurfaceOnVulkan(const Refiner& refiner, int level, const std::vector<float>& refined,
                                                bool limit, NormalKind normals);
-// For the demo's Vulkan column: a headless device to time on, or null (saying why on stderr).
-struct VulkanTiming;
-struct VulkanTimingDeleter {
-    void operator()(VulkanTiming* timing) const;
-};
-using VulkanTimingPtr = std::unique_ptr<VulkanTiming, VulkanTimingDeleter>;
-VulkanTimingPtr openVulkanTiming();
-// Median milliseconds of `runs` Vulkan evaluations of `table` (record, submit, wait on the fence;
-// the table and control vertices are uploaded once beforehand, outside the timing).
-double vulkanEvalMs(VulkanTiming& timing, const StencilTable& table, const std::vector<float>& control, int runs);
+// For the demo: the real-time loop on a headless Vulkan device with `tables` uploaded, or null
+// (saying why on stderr). `device` gets the device's name.
+std::unique_ptr<realtime::FrameEvaluator> makeVulkanFrameEvaluator(const realtime::SurfaceTables& tables,
+                                                                   std::string& device);
 
 // Where face-varying channel `channel` of `refiner` is cut at level 0: the mesh edges whose faces
 // disagree on a value at either end, and the vertices with more than one value.
@@ -115,10 +113,14 @@ struct InfoArgs {
     int level = 3;
 };
 
+// `quadtri demo`: the real-time loop (tools/realtime/) timed per evaluator.
 struct DemoArgs {
     MeshArgs mesh;
-    int levels = 3;
-    std::string outDir = ".";
+    int level = 3;
+    int frames = 120;         // timed frames per evaluator, at most
+    double seconds = 2.0;     // time per evaluator, at most (at least 3 frames are timed)
+    std::vector<EvaluatorKind> evaluators{EvaluatorKind::Cpu, EvaluatorKind::Tbb, EvaluatorKind::Vulkan};
+    std::optional<realtime::TableRoute> route;  // default: realtime::fastestSurfaceTables' choice
 };
 
 // `quadtri render` (tools/render_command.cpp; docs/rendering.md).

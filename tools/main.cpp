@@ -248,10 +248,34 @@ int main(int argc, char** argv) {
     addLevel(*infoCmd, "--level,-l", info.level, "Deepest level reported");
 
     cli::DemoArgs demo;
-    CLI::App* demoCmd = app.add_subcommand("demo", "Time the analyzer and evaluator per level and write each level");
+    CLI::App* demoCmd = app.add_subcommand(
+        "demo", "Time the real-time loop: the cage skinned every frame, then the level's limit positions and normals, "
+                "on each evaluator");
     addMeshFlags(*demoCmd, demo.mesh);
-    addLevel(*demoCmd, "--levels", demo.levels, "Levels 1..N are timed and written", 1);
-    demoCmd->add_option("--out-dir", demo.outDir, "Folder for <stem>_level<L>.obj")->capture_default_str();
+    addLevel(*demoCmd, "--level,-l", demo.level, "Refinement level evaluated every frame", 1);
+    demoCmd->add_option("--frames", demo.frames, "Frames timed per evaluator, at most")
+        ->check(CLI::Range(1, 1000000))
+        ->capture_default_str();
+    demoCmd->add_option("--seconds", demo.seconds, "Seconds per evaluator, at most (at least 3 frames are timed)")
+        ->check(CLI::Range(0.0, 3600.0))
+        ->capture_default_str();
+    demoCmd->add_option_function<std::vector<std::string>>(
+            "--evaluators",
+            [&demo](const std::vector<std::string>& names) {
+                demo.evaluators.clear();
+                for (const std::string& name : names) demo.evaluators.push_back(evaluators.at(name));
+            },
+            "Evaluators timed, comma-separated, in order (default cpu,tbb,vulkan; vulkan is skipped, saying why, "
+            "without a device)")
+        ->delimiter(',')
+        ->check(oneOf(evaluators, "evaluator"));
+    static const std::map<std::string, realtime::TableRoute> routes{
+        {"factorized", realtime::TableRoute::FactorizedLimit}, {"levels", realtime::TableRoute::LevelsThenLimit}};
+    demoCmd->add_option_function<std::string>(
+            "--tables", [&demo](const std::string& s) { demo.route = routes.at(s); },
+            "factorized: one limit pass from the cage (default); levels: the per-level tables, then the limit "
+            "table over the last level")
+        ->check(oneOf(routes, "table route"));
 
     cli::RenderArgs render;
     CLI::App* renderCmd = app.add_subcommand("render", "Draw the refined surface offscreen with Vulkan and write a PNG");

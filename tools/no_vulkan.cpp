@@ -6,10 +6,6 @@
 
 namespace quadtri::cli {
 
-struct VulkanTiming {};
-
-void VulkanTimingDeleter::operator()(VulkanTiming* timing) const { delete timing; }
-
 std::optional<std::vector<std::vector<float>>> evaluateLevelsOnVulkan(const std::vector<LevelData>&) {
     std::fprintf(stderr, "quadtri: built without Vulkan (QUADTRI_WITH_VULKAN=OFF); using the CPU evaluator\n");
     return std::nullopt;
@@ -20,12 +16,10 @@ std::optional<Surface> evaluateSurfaceOnVulkan(const Refiner&, int, const std::v
     return std::nullopt;
 }
 
-VulkanTimingPtr openVulkanTiming() {
-    std::fprintf(stderr, "quadtri: built without Vulkan (QUADTRI_WITH_VULKAN=OFF); no Vulkan timings\n");
+std::unique_ptr<realtime::FrameEvaluator> makeVulkanFrameEvaluator(const realtime::SurfaceTables&, std::string&) {
+    std::fprintf(stderr, "quadtri: built without Vulkan (QUADTRI_WITH_VULKAN=OFF); vulkan skipped\n");
     return nullptr;
 }
-
-double vulkanEvalMs(VulkanTiming&, const StencilTable&, const std::vector<float>&, int) { return 0; }
 
 int runRender(const RenderArgs&) {
     std::fprintf(stderr, "quadtri: render draws with Vulkan, and this quadtri was built without it (QUADTRI_WITH_VULKAN=OFF)\n");

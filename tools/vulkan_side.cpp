@@ -1,7 +1,5 @@
 // The CLI's Vulkan side (built with QUADTRI_WITH_VULKAN; tools/no_vulkan.cpp stands in without
-// it): `refine --evaluator vulkan` (levels, limit, normals) and the demo's Vulkan column.
-#include <algorithm>
-#include <chrono>
+// it): `refine --evaluator vulkan` (levels, limit, normals) and the demo's Vulkan evaluator.
 #include <cstdio>
 
 #include <quadtri/far/mesh_normal_table.h>
@@ -10,14 +8,9 @@
 #include <quadtri/osd/vulkan_limit_evaluator.h>
 #include <quadtri/osd/vulkan_limit_tables.h>
 #include "tools/commands.h"
+#include "tools/realtime/vulkan_frame_evaluator.h"
 
 namespace quadtri::cli {
-
-struct VulkanTiming {
-    VulkanContext ctx;
-};
-
-void VulkanTimingDeleter::operator()(VulkanTiming* timing) const { delete timing; }
 
 // Each item's levels in one Vulkan buffer, one dispatch per level; its last level read back.
 std::optional<std::vector<std::vector<float>>> evaluateLevelsOnVulkan(const std::vector<LevelData>& data) {
@@ -88,32 +81,37 @@ std::optional<Surface> evaluateSurfaceOnVulkan(const Refiner& refiner, int level
     }
 }
 
-VulkanTimingPtr openVulkanTiming() {
+namespace {
+
+// The demo's Vulkan evaluator with a headless context of its own.
+class HeadlessFrameEvaluator : public realtime::FrameEvaluator {
+public:
+    explicit HeadlessFrameEvaluator(const realtime::SurfaceTables& tables) : evaluator_(ctx_, tables) {}
+    std::string name() const override { return evaluator_.name(); }
+    void setCage(const float* cage) override { evaluator_.setCage(cage); }
+    void evaluate(realtime::PhaseTimes& times) override { evaluator_.evaluate(times); }
+    void readBack(std::vector<float>& positions, std::vector<float>& normals) override {
+        evaluator_.readBack(positions, normals);
+    }
+    std::string deviceName() const { return ctx_.deviceName(); }
+
+private:
+    VulkanContext ctx_;
+    realtime::VulkanFrameEvaluator evaluator_;
+};
+
+}  // namespace
+
+std::unique_ptr<realtime::FrameEvaluator> makeVulkanFrameEvaluator(const realtime::SurfaceTables& tables,
+                                                                   std::string& device) {
     try {
-        return VulkanTimingPtr(new VulkanTiming{VulkanContext()});
+        auto evaluator = std::make_unique<HeadlessFrameEvaluator>(tables);
+        device = evaluator->deviceName();
+        return evaluator;
     } catch (const VulkanError& e) {
-        std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); no Vulkan timings\n", e.what());
+        std::fprintf(stderr, "quadtri: Vulkan unavailable (%s); vulkan skipped\n", e.what());
         return nullptr;
     }
-}
-
-double vulkanEvalMs(VulkanTiming& timing, const StencilTable& table, const std::vector<float>& control, int runs) {
-    VulkanContext& ctx = timing.ctx;
-    const BufferDescriptor d(0, 3, 3);
-    VulkanStencilTable gpuTable(ctx, table);
-    VulkanVertexBuffer src = VulkanVertexBuffer::create(ctx, table.numSourceVertices, 3);
-    VulkanVertexBuffer dst = VulkanVertexBuffer::create(ctx, table.numStencils(), 3);
-    src.updateData(control.data(), 0, table.numSourceVertices);
-    VulkanEvaluator evaluator(ctx);
-    evaluator.EvalStencilsAndWait(src, d, dst, d, gpuTable);  // warm-up: pipeline creation
-    std::vector<double> ms;
-    for (int run = 0; run < runs; ++run) {
-        const auto start = std::chrono::steady_clock::now();
-        evaluator.EvalStencilsAndWait(src, d, dst, d, gpuTable);
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
-    std::nth_element(ms.begin(), ms.begin() + runs / 2, ms.end());
-    return ms[runs / 2];
 }
 
 }  // namespace quadtri::cli

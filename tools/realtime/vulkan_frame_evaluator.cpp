@@ -1,0 +1,89 @@
+#include "tools/realtime/vulkan_frame_evaluator.h"
+
+#include <chrono>
+
+namespace quadtri::realtime {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::vector<std::unique_ptr<VulkanStencilTable>> upload(VulkanContext& ctx, const std::vector<StencilTable>& tables) {
+    std::vector<std::unique_ptr<VulkanStencilTable>> uploaded;
+    for (const StencilTable& table : tables) uploaded.push_back(std::make_unique<VulkanStencilTable>(ctx, table));
+    return uploaded;
+}
+
+std::vector<const VulkanStencilTable*> pointers(const std::vector<std::unique_ptr<VulkanStencilTable>>& tables) {
+    std::vector<const VulkanStencilTable*> p;
+    for (const auto& t : tables) p.push_back(t.get());
+    return p;
+}
+
+const BufferDescriptor kXyz(0, 3, 3);
+
+}  // namespace
+
+VulkanFrameEvaluator::VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTables& tables)
+    : ctx_(ctx), route_(tables.route), numControl_(tables.numControl), levels_(upload(ctx, tables.levels)),
+      levelFirst_(levels_.empty() ? std::vector<int>{0, tables.numControl}
+                                  : VulkanEvaluator::levelFirstElements(pointers(levels_))),
+      limit_(ctx, tables.limit),
+      fallback_(tables.route == TableRoute::LevelsThenLimit
+                    ? std::make_unique<VulkanMeshNormalTable>(ctx, tables.fallback)
+                    : nullptr),
+      source_(VulkanVertexBuffer::create(ctx, levelFirst_.back(), 3)),
+      positions_(VulkanVertexBuffer::create(ctx, tables.numPoints, 3)),
+      normals_(VulkanVertexBuffer::create(ctx, tables.numPoints, 3)), stencilEvaluator_(ctx), limitEvaluator_(ctx) {}
+
+void VulkanFrameEvaluator::setCage(const float* cage) { source_.updateData(cage, 0, numControl_); }
+
+void VulkanFrameEvaluator::recordLevels(VkCommandBuffer cmd) {
+    if (!levels_.empty()) stencilEvaluator_.EvalLevels(cmd, {source_.buffer(), 0}, kXyz, pointers(levels_));
+}
+
+void VulkanFrameEvaluator::recordLimit(VkCommandBuffer cmd) {
+    // The limit table reads the last level: the cage itself for a factorized table.
+    const VkDeviceSize lastLevel = VkDeviceSize(levelFirst_[levelFirst_.size() - 2]) * 3 * sizeof(float);
+    limitEvaluator_.EvalLimitStencils(cmd, {source_.buffer(), lastLevel}, kXyz, {positions_.buffer(), 0}, kXyz, {},
+                                      kXyz, {}, kXyz, {normals_.buffer(), 0}, kXyz, limit_, fallback_.get());
+}
+
+void VulkanFrameEvaluator::record(VkCommandBuffer cmd) {
+    recordLevels(cmd);
+    recordLimit(cmd);
+}
+
+void VulkanFrameEvaluator::resetDescriptorSets() {
+    stencilEvaluator_.resetDescriptorSets();
+    limitEvaluator_.resetDescriptorSets();
+}
+
+void VulkanFrameEvaluator::evaluate(PhaseTimes& times) {
+    Clock::time_point start = Clock::now();
+    if (route_ == TableRoute::FactorizedLimit) {
+        ctx_.submitAndWait([this](VkCommandBuffer cmd) { record(cmd); });
+        times.evaluateMs = msSince(start);
+        times.normalsMs = 0;
+    } else {
+        ctx_.submitAndWait([this](VkCommandBuffer cmd) { recordLevels(cmd); });
+        times.evaluateMs = msSince(start);
+        start = Clock::now();
+        ctx_.submitAndWait([this](VkCommandBuffer cmd) { recordLimit(cmd); });
+        times.normalsMs = msSince(start);
+    }
+    resetDescriptorSets();
+}
+
+void VulkanFrameEvaluator::readBack(std::vector<float>& positions, std::vector<float>& normals) {
+    positions.resize(positions_.numFloats());
+    normals.resize(normals_.numFloats());
+    positions_.readBack(positions.data());
+    normals_.readBack(normals.data());
+}
+
+}  // namespace quadtri::realtime

@@ -1,0 +1,65 @@
+// The real-time loop on a Vulkan device: the deformed cage uploaded, the tables applied by
+// VulkanEvaluator / VulkanLimitEvaluator, level N's limit positions and normals left in device
+// buffers (VulkanVertexBuffer: storage and vertex buffers both), where a renderer's vertex
+// shader reads them with no trip through the host.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <quadtri/osd/vulkan_buffer.h>
+#include <quadtri/osd/vulkan_context.h>
+#include <quadtri/osd/vulkan_evaluator.h>
+#include <quadtri/osd/vulkan_limit_evaluator.h>
+#include <quadtri/osd/vulkan_limit_tables.h>
+#include <quadtri/osd/vulkan_stencil_table.h>
+#include "tools/realtime/frame_evaluator.h"
+#include "tools/realtime/surface_tables.h"
+
+namespace quadtri::realtime {
+
+class VulkanFrameEvaluator : public FrameEvaluator {
+public:
+    // Uploads `tables` to `ctx`'s device once (waits). The context (headless, or adopted from a
+    // renderer: VulkanContext::External) must outlive the evaluator; `tables` need not.
+    VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTables& tables);
+
+    std::string name() const override { return "vulkan"; }
+    // Uploads the cage (one staging copy, waited on).
+    void setCage(const float* cage) override;
+    // record() into a command buffer of the context's, submitted and waited on (the levels and
+    // the limit pass in two submissions under LevelsThenLimit, to time them apart).
+    void evaluate(PhaseTimes& times) override;
+    void readBack(std::vector<float>& positions, std::vector<float>& normals) override;
+
+    // For a renderer: records the whole evaluation into `cmd` (a primary command buffer of the
+    // context's device on a compute-capable queue family), after the cage's upload. Its last
+    // barrier makes the outputs visible to compute, transfer and host reads; add a barrier to
+    // the vertex-input stage before drawing from them. Call resetDescriptorSets() once the
+    // device has finished `cmd`.
+    void record(VkCommandBuffer cmd);
+    void resetDescriptorSets();
+
+    // Level N's limit positions and unit normals, 3 floats per vertex, element i = vertex i.
+    const VulkanVertexBuffer& positions() const { return positions_; }
+    const VulkanVertexBuffer& normals() const { return normals_; }
+    VulkanContext& context() const { return ctx_; }
+
+private:
+    void recordLevels(VkCommandBuffer cmd);
+    void recordLimit(VkCommandBuffer cmd);
+
+    VulkanContext& ctx_;
+    TableRoute route_;
+    int numControl_;
+    std::vector<std::unique_ptr<VulkanStencilTable>> levels_;
+    std::vector<int> levelFirst_;   // first element of each level in source_ (EvalLevels' layout)
+    VulkanLimitStencilTable limit_;
+    std::unique_ptr<VulkanMeshNormalTable> fallback_;
+    // The cage at elements [0, numControl), followed by levels 1..N under LevelsThenLimit.
+    VulkanVertexBuffer source_, positions_, normals_;
+    VulkanEvaluator stencilEvaluator_;
+    VulkanLimitEvaluator limitEvaluator_;
+};
+
+}  // namespace quadtri::realtime
