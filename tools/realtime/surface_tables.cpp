@@ -11,9 +11,11 @@ const char* toString(TableRoute route) {
 
 SurfaceTables::SurfaceTables(const Refiner& refiner, int level, TableRoute route)
     : route(route), level(level), numControl(refiner.faces(0).numVertices()), numPoints(0) {
-    if (level < 1 || level > refiner.maxLevel())
-        throw std::invalid_argument("SurfaceTables: level " + std::to_string(level) + " outside the refined 1.." +
-                                    std::to_string(refiner.maxLevel()));
+    // Level 0 (the cage's own limit surface, for the viewer) has no factorized table.
+    const int lowest = route == TableRoute::FactorizedLimit ? 1 : 0;
+    if (level < lowest || level > refiner.maxLevel())
+        throw std::invalid_argument("SurfaceTables: level " + std::to_string(level) + " outside the refined " +
+                                    std::to_string(lowest) + ".." + std::to_string(refiner.maxLevel()));
     numPoints = refiner.faces(level).numVertices();
     if (route == TableRoute::FactorizedLimit) {
         limit = refiner.factorizedLimitStencils(level);

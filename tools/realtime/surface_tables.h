@@ -24,7 +24,7 @@ enum class TableRoute {
 };
 const char* toString(TableRoute route);
 
-// The host tables of `route` for level `level` (>= 1) of `refiner` (refined at least that far),
+// The host tables of `route` for level `level` (>= 1; LevelsThenLimit also 0) of `refiner` (refined at least that far),
 // copied, so they outlive the Refiner. Throws what the Refiner throws (MemoryBudgetError
 // included).
 struct SurfaceTables {

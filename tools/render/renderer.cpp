@@ -417,13 +417,13 @@ void Renderer::setTexture(const Image* image) {
     writeSurfaceSet();
 }
 
-void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings& view) {
+void Renderer::record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings& view, VkOffset2D origin) {
     const float aspect = float(extent.width) / float(std::max(extent.height, 1u));
     const glm::mat4 viewMatrix = view.camera.view();
     const glm::mat4 viewProjection = view.camera.projection(aspect, view.sceneRadius) * viewMatrix;
     const glm::vec3 eye = view.camera.eye();
-    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
+    const VkViewport viewport{float(origin.x), float(origin.y), float(extent.width), float(extent.height), 0.0f, 1.0f};
+    const VkRect2D scissor{origin, extent};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 

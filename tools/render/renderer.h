@@ -64,8 +64,9 @@ public:
     // A texture for Textured shading; null: the procedural UV checker.
     void setTexture(const Image* image);
 
-    // Draws the visible parts of the view into the current subpass, over the whole of `extent`.
-    void record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings& view);
+    // Draws the visible parts of the view into the current subpass, over the `extent` whose
+    // top-left corner is at `origin` (a viewer's side-by-side viewports).
+    void record(VkCommandBuffer cmd, VkExtent2D extent, const ViewSettings& view, VkOffset2D origin = {0, 0});
 
 private:
     struct Texture;
