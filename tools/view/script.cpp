@@ -28,6 +28,7 @@ const std::map<std::string, Form>& forms() {
         {"deform", {ScriptVerb::Deform, "w"}},             {"camera", {ScriptVerb::Camera, "nn"}},
         {"frames", {ScriptVerb::Frames, "i"}},             {"load", {ScriptVerb::Load, "w"}},
         {"save", {ScriptVerb::Save, "w"}},                 {"screenshot", {ScriptVerb::Screenshot, "w"}},
+        {"screenshot-window", {ScriptVerb::ScreenshotWindow, "w"}},
         {"quit", {ScriptVerb::Quit, ""}}};
     return table;
 }

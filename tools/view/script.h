@@ -37,6 +37,7 @@ enum class ScriptVerb {
     Load,          // load PATH
     Save,          // save PATH: the cage with its tags
     Screenshot,    // screenshot PATH: the view as PNG, without the panel
+    ScreenshotWindow,  // screenshot-window PATH: the same with the panel
     Quit,
 };
 

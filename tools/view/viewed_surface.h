@@ -54,7 +54,7 @@ private:
     std::vector<uint32_t> edges_;
     int level_ = 0;
     bool onDevice_ = false;
-    float curvatureRange_ = 1.0f;
+    float curvatureRange_ = 0.0f;  // until a curvature update
 };
 
 }  // namespace quadtri::view

@@ -208,6 +208,7 @@ void Viewer::frameMesh() {
 void Viewer::rebuild() {
     if (!needsRebuild_) return;
     const std::size_t count = std::size_t(viewportCount());
+    const bool reframe = !surfaces_.empty() && surfaces_.size() != count;  // the viewports' shape changed
     while (surfaces_.size() < count)
         surfaces_.push_back(std::make_unique<ViewedSurface>(gpu_->context(), swapchain_->renderPass(),
                                                             texture_ ? &*texture_ : nullptr));
@@ -226,9 +227,10 @@ void Viewer::rebuild() {
     }
     needsRebuild_ = false;
     needsUpdate_ = true;
+    if (reframe) frameMesh();
 }
 
-void Viewer::frame(render::Image* screenshot) {
+void Viewer::frame(render::Image* screenshot, bool withPanel) {
     glfwPollEvents();
     rebuild();
     handleInput();
@@ -262,13 +264,15 @@ void Viewer::frame(render::Image* screenshot) {
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                          VK_PIPELINE_STAGE_VERTEX_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
     swapchain_->beginRenderPass(kBackground);
+    // One curvature colour range for both viewports, so that they compare.
+    render::ViewSettings view = view_;
+    view.curvatureRange = 1e-6f;
+    for (const auto& surface : surfaces_) view.curvatureRange = std::max(view.curvatureRange, surface->curvatureRange());
     for (int i = 0; i < viewportCount(); ++i) {
-        render::ViewSettings view = view_;
-        if (curvature) view.curvatureRange = std::max(surfaces_[std::size_t(i)]->curvatureRange(), 1e-6f);
         const VkRect2D r = viewport(i);
         surfaces_[std::size_t(i)]->renderer().record(cmd, r.extent, view, r.offset);
     }
-    ui_->render(cmd, screenshot == nullptr);
+    ui_->render(cmd, screenshot == nullptr || withPanel);
     swapchain_->endFrame(screenshot);
     drawMs_ = std::chrono::duration<double, std::milli>(Clock::now() - drawStart).count();
 }
@@ -331,8 +335,10 @@ void Viewer::pick(glm::vec2 cursor, bool add) {
         // A vertex wins near it: every edge of the vertex is near there too.
         const int vertex = nearestPoint(points, cursor, kPickPointPixels);
         const int edge = vertex < 0 ? nearestEdge(points, surface.edges(), cursor, kPickEdgePixels) : -1;
-        if (vertex >= 0)
+        if (vertex >= 0) {
             document_.selectVertex(vertex, add);
+            view_.showPoints = true;  // a selected vertex shows as a point
+        }
         else if (edge >= 0)
             document_.selectEdge(int(surface.edges()[2 * std::size_t(edge)]), int(surface.edges()[2 * std::size_t(edge) + 1]), add);
         else if (!add)
@@ -342,9 +348,9 @@ void Viewer::pick(glm::vec2 cursor, bool add) {
     }
 }
 
-void Viewer::saveScreenshot(const std::string& path) {
+void Viewer::saveScreenshot(const std::string& path, bool withPanel) {
     render::Image image;
-    frame(&image);
+    frame(&image, withPanel);
     if (image.rgba.empty()) throw io::ObjError(path + ": no frame to save (the window has no area)");
     const std::vector<uint8_t> png = render::encodePng(image);
     io::writeReplacing(path, [&png](std::ostream& out) {

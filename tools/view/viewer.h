@@ -43,7 +43,7 @@ private:
     int runFrames();
     // One frame: rebuild what the choices changed, input, the real-time loop, draw. With
     // `screenshot` the frame is drawn without the panel and copied out.
-    void frame(render::Image* screenshot);
+    void frame(render::Image* screenshot, bool withPanel = false);
     void rebuild();
     void handleInput();
     void pick(glm::vec2 cursor, bool add);
@@ -61,7 +61,7 @@ private:
     glm::mat4 viewProjection(int index) const;
     void requestLoad(const std::string& path);  // through the unsaved-edits prompt
     void load(const std::string& path);         // shows the error and keeps the mesh on failure
-    void saveScreenshot(const std::string& path);
+    void saveScreenshot(const std::string& path, bool withPanel = false);
     void runCommand(const ScriptCommand& command, const std::string& script);
 
     ViewerArgs args_;

@@ -47,8 +47,11 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
     switch (command.verb) {
         case ScriptVerb::SelectEdge: edge(false); break;
         case ScriptVerb::AddEdge: edge(true); break;
-        case ScriptVerb::SelectVertex: document_.selectVertex(vertex(0), false); break;
-        case ScriptVerb::AddVertex: document_.selectVertex(vertex(0), true); break;
+        case ScriptVerb::SelectVertex:
+        case ScriptVerb::AddVertex:
+            document_.selectVertex(vertex(0), command.verb == ScriptVerb::AddVertex);
+            view_.showPoints = true;
+            break;
         case ScriptVerb::ClearSelection: document_.clearSelection(); break;
         case ScriptVerb::Sharpness:
             if (!document_.hasSelection()) throw ScriptError(where + "'sharpness' with nothing selected");
@@ -98,8 +101,9 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
             }
             break;
         case ScriptVerb::Screenshot:
+        case ScriptVerb::ScreenshotWindow:
             try {
-                saveScreenshot(w[0]);
+                saveScreenshot(w[0], command.verb == ScriptVerb::ScreenshotWindow);
             } catch (const io::ObjError& e) {
                 throw ScriptError(where + e.what());
             }
