@@ -34,7 +34,7 @@ enum class ScriptVerb {
     Deform,        // deform on|off
     Camera,        // camera YAW PITCH (degrees)
     Frames,        // frames N: render N more frames
-    Load,          // load PATH
+    Load,          // load PATH (a file that fails is reported on stderr; the mesh shown stays)
     Save,          // save PATH: the cage with its tags
     Screenshot,    // screenshot PATH: the view as PNG, without the panel
     ScreenshotWindow,  // screenshot-window PATH: the same with the panel

@@ -46,22 +46,24 @@ void copyInto(std::array<char, 1024>& buffer, const std::string& text) {
 
 }  // namespace
 
-Viewer::Viewer(const ViewerArgs& args) : args_(args), window_(args.width, args.height, "quadtri view") {
-    glfwSetWindowUserPointer(window_.handle(), this);
+Viewer::Viewer(const ViewerArgs& args) : args_(args) {
+    document_.load(args.mesh.input);  // a bad file before any window opens
+    window_.emplace(args.width, args.height, "quadtri view");
+    glfwSetWindowUserPointer(window_->handle(), this);
     gpu_.emplace(windowDevice());
-    swapchain_.emplace(gpu_->context(), window_.surface(gpu_->instance()));
+    surface_.emplace(*window_, gpu_->instance());
+    swapchain_.emplace(gpu_->context(), surface_->handle());
     // The swapchain exists once a frame has begun: ImGui needs its image count.
-    swapchain_->beginFrame(window_.framebufferSize());
+    swapchain_->beginFrame(window_->framebufferSize());
     swapchain_->beginRenderPass(kBackground);
     swapchain_->endFrame(nullptr);
     // Ours first: ImGui's callbacks chain to them.
-    glfwSetScrollCallback(window_.handle(), &scrolled);
-    glfwSetDropCallback(window_.handle(), &dropped);
-    ui_.emplace(window_.handle(), gpu_->context(), swapchain_->renderPass(), swapchain_->minImageCount(),
+    glfwSetScrollCallback(window_->handle(), &scrolled);
+    glfwSetDropCallback(window_->handle(), &dropped);
+    ui_.emplace(window_->handle(), gpu_->context(), swapchain_->renderPass(), swapchain_->minImageCount(),
                 std::max(swapchain_->imageCount(), swapchain_->minImageCount()));
     if (!args.texture.empty()) texture_ = render::readImage(args.texture);
 
-    document_.load(args.mesh.input);
     const io::ObjMesh& mesh = document_.mesh();
     choices_.scheme = args.mesh.scheme.value_or(Options().scheme);
     choices_.boundary = args.mesh.boundary.value_or(mesh.boundary.value_or(Options().boundary));
@@ -81,10 +83,6 @@ Viewer::Viewer(const ViewerArgs& args) : args_(args), window_(args.width, args.h
 
 Viewer::~Viewer() {
     if (gpu_) vkDeviceWaitIdle(gpu_->device());
-    surfaces_.clear();
-    ui_.reset();
-    swapchain_.reset();
-    window_.destroySurface();  // before the instance
 }
 
 int Viewer::run() {
@@ -122,8 +120,8 @@ int Viewer::runFrames() {
         return 0;
     }
     while (!quit_) {
-        if (window_.shouldClose()) {
-            window_.setShouldClose(false);
+        if (window_->shouldClose()) {
+            window_->setShouldClose(false);
             if (document_.unsaved())
                 pending_ = Pending::Quit;
             else
@@ -250,7 +248,7 @@ void Viewer::frame(render::Image* screenshot, bool withPanel) {
     }
 
     const Clock::time_point drawStart = Clock::now();
-    if (!swapchain_->beginFrame(window_.framebufferSize())) {
+    if (!swapchain_->beginFrame(window_->framebufferSize())) {
         glfwWaitEventsTimeout(0.05);  // minimized or resized: try again
         return;
     }
@@ -278,7 +276,7 @@ void Viewer::frame(render::Image* screenshot, bool withPanel) {
 }
 
 void Viewer::handleInput() {
-    GLFWwindow* w = window_.handle();
+    GLFWwindow* w = window_->handle();
     double x = 0, y = 0;
     glfwGetCursorPos(w, &x, &y);
     // Window coordinates to framebuffer pixels (they differ on high-density displays).

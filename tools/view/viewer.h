@@ -64,15 +64,17 @@ private:
     void saveScreenshot(const std::string& path, bool withPanel = false);
     void runCommand(const ScriptCommand& command, const std::string& script);
 
+    // Declared in the order of creation: each goes before what it was made from.
     ViewerArgs args_;
-    Window window_;
+    Document document_;
+    std::optional<Window> window_;
     std::optional<render::GpuDevice> gpu_;
+    std::optional<WindowSurface> surface_;
     std::optional<Swapchain> swapchain_;
     std::optional<ImGuiLayer> ui_;
     std::optional<render::Image> texture_;
     std::vector<std::unique_ptr<ViewedSurface>> surfaces_;  // one per viewport
 
-    Document document_;
     Choices choices_;
     render::ViewSettings view_;
     bool needsRebuild_ = true, needsUpdate_ = true, quit_ = false;

@@ -1,5 +1,6 @@
 // The script language's commands (tools/view/script.h) run against the viewer.
 #include <cmath>
+#include <cstdio>
 
 #include "tools/view/cage_edits.h"
 #include "tools/view/viewer.h"
@@ -90,8 +91,12 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
             for (int i = 1; i < int(command.numbers[0]); ++i) frame(nullptr);
             break;
         case ScriptVerb::Load:
+            // As in the panel: a file that fails keeps the mesh shown; the script goes on.
             load(w[0]);
-            if (!message_.empty()) throw ScriptError(where + message_);
+            if (!message_.empty()) {
+                std::fprintf(stderr, "quadtri: %s%s (the mesh shown is kept)\n", where.c_str(), message_.c_str());
+                message_.clear();
+            }
             break;
         case ScriptVerb::Save:
             try {

@@ -39,7 +39,6 @@ Window::Window(int width, int height, const std::string& title) {
 }
 
 Window::~Window() {
-    destroySurface();
     glfwDestroyWindow(window_);
     glfwTerminate();
 }
@@ -55,18 +54,12 @@ bool Window::canPresent(VkInstance instance, VkPhysicalDevice device, uint32_t f
     return glfwGetPhysicalDevicePresentationSupport(instance, device, family) == GLFW_TRUE;
 }
 
-VkSurfaceKHR Window::surface(VkInstance instance) {
-    if (surface_) return surface_;
-    const VkResult r = glfwCreateWindowSurface(instance, window_, nullptr, &surface_);
-    if (r != VK_SUCCESS) throw WindowError("cannot create the window's Vulkan surface (" + glfwProblem() + ")");
-    instance_ = instance;
-    return surface_;
+WindowSurface::WindowSurface(const Window& window, VkInstance instance) : instance_(instance) {
+    if (glfwCreateWindowSurface(instance, window.handle(), nullptr, &surface_) != VK_SUCCESS)
+        throw WindowError("cannot create the window's Vulkan surface (" + glfwProblem() + ")");
 }
 
-void Window::destroySurface() noexcept {
-    if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
-    surface_ = VK_NULL_HANDLE;
-}
+WindowSurface::~WindowSurface() { vkDestroySurfaceKHR(instance_, surface_, nullptr); }
 
 VkExtent2D Window::framebufferSize() const {
     int w = 0, h = 0;

@@ -31,10 +31,6 @@ public:
     // Whether queue family `family` of `device` can present to this platform's windows.
     static bool canPresent(VkInstance instance, VkPhysicalDevice device, uint32_t family);
 
-    // The window's surface on `instance`, created on first call; destroyed by destroySurface
-    // (before the instance goes).
-    VkSurfaceKHR surface(VkInstance instance);
-    void destroySurface() noexcept;
 
     VkExtent2D framebufferSize() const;
     bool shouldClose() const;
@@ -43,7 +39,20 @@ public:
 
 private:
     GLFWwindow* window_ = nullptr;
-    VkInstance instance_ = VK_NULL_HANDLE;
+};
+
+// The window's Vulkan surface on an instance; declare it after the instance's owner, so that it
+// goes first.
+class WindowSurface {
+public:
+    WindowSurface(const Window& window, VkInstance instance);
+    ~WindowSurface();
+    WindowSurface(const WindowSurface&) = delete;
+    WindowSurface& operator=(const WindowSurface&) = delete;
+    VkSurfaceKHR handle() const { return surface_; }
+
+private:
+    VkInstance instance_;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
 };
 
