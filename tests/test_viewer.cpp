@@ -164,6 +164,41 @@ TEST(Viewer, RaisingAnEdgesSharpnessChangesTheViewNearItOnlyAndTheSavedCageHasTh
               std::string::npos);
 }
 
+TEST(Viewer, AClickPicksTheEdgeUnderTheCursorAndShiftAddsAVertex) {
+    SKIP_WITHOUT_XVFB();
+    const io::ObjMesh mesh = io::readObj(kTorus);
+    render::Camera camera;
+    camera.frame(render::boundingSphere(mesh.positions.data(), mesh.numVertices()), float(kWidth) / float(kHeight));
+    const glm::mat4 viewProjection = camera.projection(float(kWidth) / float(kHeight), 1.0f) * camera.view();
+    const std::vector<view::ScreenPoint> points =
+        view::projectPoints(viewProjection, mesh.positions.data(), mesh.numVertices(), {0, 0}, {kWidth, kHeight});
+    // The longest edge on the screen, clicked a third of the way along (away from both ends'
+    // vertex radius), and then the first vertex in the picture, with shift.
+    const std::vector<std::pair<int, int>> edges = cageEdges(mesh);
+    std::pair<int, int> edge = edges[0];
+    for (const auto& e : edges)
+        if (glm::length(points[e.first].pixel - points[e.second].pixel) >
+            glm::length(points[edge.first].pixel - points[edge.second].pixel))
+            edge = e;
+    const glm::vec2 click = points[edge.first].pixel + (points[edge.second].pixel - points[edge.first].pixel) / 3.0f;
+    int vertex = 0;
+    while (points[vertex].pixel.x < 0 || points[vertex].pixel.x >= kWidth || points[vertex].pixel.y < 0 ||
+           points[vertex].pixel.y >= kHeight)
+        ++vertex;
+    const std::string saved = work("clicked.obj");
+    const Outcome r = view(kTorus, "click " + std::to_string(click.x) + " " + std::to_string(click.y) +
+                                       "\nshift-click " + std::to_string(points[vertex].pixel.x) + " " +
+                                       std::to_string(points[vertex].pixel.y) + "\nsharpness 4\nsave " + saved +
+                                       "\nquit\n");
+    SKIP_WITHOUT_DEVICE(r);
+    ASSERT_EQ(r.status, 0) << r.errors;
+    const io::ObjMesh back = io::readObj(saved);
+    EXPECT_EQ(back.creaseSharpness, std::vector<float>{4.0f});
+    EXPECT_EQ(view::creaseSharpness(back, edge.first, edge.second), 4.0f);
+    EXPECT_EQ(back.corners, std::vector<int>{vertex});
+    EXPECT_EQ(back.cornerSharpness, std::vector<float>{4.0f});
+}
+
 TEST(Viewer, AFileThatFailsToLoadKeepsTheMeshShown) {
     SKIP_WITHOUT_XVFB();
     const std::string bad = work("bad.obj"), saved = work("kept.obj");

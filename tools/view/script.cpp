@@ -20,7 +20,8 @@ const std::map<std::string, Form>& forms() {
     static const std::map<std::string, Form> table{
         {"select-edge", {ScriptVerb::SelectEdge, "ii"}},   {"add-edge", {ScriptVerb::AddEdge, "ii"}},
         {"select-vertex", {ScriptVerb::SelectVertex, "i"}}, {"add-vertex", {ScriptVerb::AddVertex, "i"}},
-        {"clear-selection", {ScriptVerb::ClearSelection, ""}}, {"sharpness", {ScriptVerb::Sharpness, "s"}},
+        {"clear-selection", {ScriptVerb::ClearSelection, ""}}, {"click", {ScriptVerb::Click, "nn"}},
+        {"shift-click", {ScriptVerb::ShiftClick, "nn"}}, {"sharpness", {ScriptVerb::Sharpness, "s"}},
         {"level", {ScriptVerb::Level, "l"}},               {"scheme", {ScriptVerb::Scheme, "w"}},
         {"compare", {ScriptVerb::Compare, "w"}},           {"boundary", {ScriptVerb::Boundary, "w"}},
         {"crease-method", {ScriptVerb::CreaseMethod, "w"}}, {"uvs", {ScriptVerb::UVs, "w"}},

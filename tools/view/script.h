@@ -22,6 +22,8 @@ enum class ScriptVerb {
     SelectVertex,  // select-vertex V
     AddVertex,     // add-vertex V
     ClearSelection,
+    Click,         // click X Y: a left click at window pixel (X, Y), picking as the mouse does
+    ShiftClick,    // shift-click X Y
     Sharpness,     // sharpness S|inf: the selected edges' crease and vertices' corner sharpness
     Level,         // level N (0-6)
     Scheme,        // scheme NAME

@@ -54,6 +54,10 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
             view_.showPoints = true;
             break;
         case ScriptVerb::ClearSelection: document_.clearSelection(); break;
+        case ScriptVerb::Click:
+        case ScriptVerb::ShiftClick:
+            pick({float(command.numbers[0]), float(command.numbers[1])}, command.verb == ScriptVerb::ShiftClick);
+            break;
         case ScriptVerb::Sharpness:
             if (!document_.hasSelection()) throw ScriptError(where + "'sharpness' with nothing selected");
             document_.setSelectionSharpness(std::isinf(command.numbers[0]) ? kInfiniteSharpness : float(command.numbers[0]));
