@@ -28,7 +28,10 @@ struct Outcome {
     std::string errors;  // stderr
 };
 
-std::string work(const std::string& name) { return testing::TempDir() + "viewer_" + name; }
+// A file of the running test's own: ctest runs the cases in parallel.
+std::string work(const std::string& name) {
+    return testing::TempDir() + "viewer_" + testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
+}
 
 std::string readText(const std::string& path) {
     std::ifstream in(path);
