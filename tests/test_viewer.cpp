@@ -202,6 +202,28 @@ TEST(Viewer, AClickPicksTheEdgeUnderTheCursorAndShiftAddsAVertex) {
     EXPECT_EQ(back.cornerSharpness, std::vector<float>{4.0f});
 }
 
+int changedPixels(const render::Image& a, const render::Image& b) {
+    int count = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) count += channelDifference(a, b, x, y) > 16;
+    return count;
+}
+
+TEST(Viewer, ClosingWithUnsavedEditsPromptsAndWithoutThemQuits) {
+    SKIP_WITHOUT_XVFB();
+    const std::string open = work("open.png"), prompt = work("prompt.png"), never = work("never.obj");
+    // Edited: `close` opens the modal prompt (which veils the whole window) and the viewer stays.
+    Outcome r = view(kTorus, "select-edge 1 2\nsharpness 3\nscreenshot-window " + open +
+                                 "\nclose\nframes 2\nscreenshot-window " + prompt + "\nquit\n");
+    SKIP_WITHOUT_DEVICE(r);
+    ASSERT_EQ(r.status, 0) << r.errors;
+    EXPECT_GT(changedPixels(render::readImage(open), render::readImage(prompt)), kWidth * kHeight / 2);
+    // Unedited: `close` quits at once; the save after it never runs.
+    r = view(kTorus, "close\nsave " + never + "\n");
+    EXPECT_EQ(r.status, 0) << r.errors;
+    EXPECT_FALSE(std::ifstream(never).good());
+}
+
 TEST(Viewer, AFileThatFailsToLoadKeepsTheMeshShown) {
     SKIP_WITHOUT_XVFB();
     const std::string bad = work("bad.obj"), saved = work("kept.obj");

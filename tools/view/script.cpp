@@ -30,7 +30,7 @@ const std::map<std::string, Form>& forms() {
         {"frames", {ScriptVerb::Frames, "i"}},             {"load", {ScriptVerb::Load, "w"}},
         {"save", {ScriptVerb::Save, "w"}},                 {"screenshot", {ScriptVerb::Screenshot, "w"}},
         {"screenshot-window", {ScriptVerb::ScreenshotWindow, "w"}},
-        {"quit", {ScriptVerb::Quit, ""}}};
+        {"close", {ScriptVerb::Close, ""}},                 {"quit", {ScriptVerb::Quit, ""}}};
     return table;
 }
 

@@ -40,7 +40,8 @@ enum class ScriptVerb {
     Save,          // save PATH: the cage with its tags
     Screenshot,    // screenshot PATH: the view as PNG, without the panel
     ScreenshotWindow,  // screenshot-window PATH: the same with the panel
-    Quit,
+    Close,         // close: the window's close button (with unsaved edits the prompt opens instead)
+    Quit,          // quit: ends the script at once
 };
 
 struct ScriptCommand {

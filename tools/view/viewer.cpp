@@ -114,6 +114,7 @@ int Viewer::runFrames() {
             if (command.verb == ScriptVerb::Quit) break;
             runCommand(command, args_.script);
             after = args_.script + ":" + std::to_string(command.line) + ": ";
+            if (quit_) return 0;  // `close` without unsaved edits
         }
         if (document_.unsaved())
             std::fprintf(stderr, "quadtri: the script ends with edits it did not save\n");
@@ -122,11 +123,9 @@ int Viewer::runFrames() {
     while (!quit_) {
         if (window_->shouldClose()) {
             window_->setShouldClose(false);
-            if (document_.unsaved())
-                pending_ = Pending::Quit;
-            else
-                break;
+            closeRequested();
         }
+        if (quit_) break;
         frame(nullptr);
         if (wantsScreenshot_) {
             wantsScreenshot_ = false;
@@ -146,6 +145,13 @@ void Viewer::onScroll(double steps) {
 }
 
 void Viewer::onDrop(const std::string& path) { requestLoad(path); }
+
+void Viewer::closeRequested() {
+    if (document_.unsaved())
+        pending_ = Pending::Quit;
+    else
+        quit_ = true;
+}
 
 void Viewer::requestLoad(const std::string& path) {
     if (document_.unsaved()) {
@@ -348,7 +354,8 @@ void Viewer::pick(glm::vec2 cursor, bool add) {
 
 void Viewer::saveScreenshot(const std::string& path, bool withPanel) {
     render::Image image;
-    frame(&image, withPanel);
+    // A swapchain gone out of date draws nothing: the next frame makes a new one.
+    for (int attempt = 0; attempt < 3 && image.rgba.empty(); ++attempt) frame(&image, withPanel);
     if (image.rgba.empty()) throw io::ObjError(path + ": no frame to save (the window has no area)");
     const std::vector<uint8_t> png = render::encodePng(image);
     io::writeReplacing(path, [&png](std::ostream& out) {

@@ -60,6 +60,7 @@ private:
     VkRect2D viewport(int index) const;
     glm::mat4 viewProjection(int index) const;
     void requestLoad(const std::string& path);  // through the unsaved-edits prompt
+    void closeRequested();                      // the same for quitting
     void load(const std::string& path);         // shows the error and keeps the mesh on failure
     void saveScreenshot(const std::string& path, bool withPanel = false);
     void runCommand(const ScriptCommand& command, const std::string& script);

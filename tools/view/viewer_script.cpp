@@ -117,6 +117,7 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
                 throw ScriptError(where + e.what());
             }
             break;
+        case ScriptVerb::Close: closeRequested(); break;
         case ScriptVerb::Quit: quit_ = true; break;
     }
     needsUpdate_ = true;
