@@ -1,10 +1,13 @@
-// `quadtri view` under Xvfb, driven by a script, with the Vulkan validation layer on and silent:
+// `quadtri view` on an Xvfb server of the test's own, driven by a script, with the Vulkan validation layer on and silent:
 // raising a cage edge's sharpness changes the screenshot near that edge (projected with the
 // viewer's camera) and nowhere far from it; the saved cage carries the `t crease` tag; a file
 // that fails to load keeps the mesh; no display, a bad script or a bad file: one message, status 2.
 #include <gtest/gtest.h>
 
+#include <poll.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -52,13 +55,52 @@ Outcome run(const std::string& command) {
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readText(errors)};
 }
 
-bool haveXvfb() { return std::system("command -v xvfb-run > /dev/null 2>&1 && command -v Xvfb > /dev/null 2>&1") == 0; }
+// An Xvfb server of this process's own on a free display (Xvfb -displayfd picks it: no race
+// with other tests' servers, as xvfb-run -a has), stopped at exit. Empty display: no Xvfb.
+class Xvfb {
+public:
+    static const std::string& display() {
+        static Xvfb server;
+        return server.display_;
+    }
 
-// The viewer on `mesh` in a fresh Xvfb server, running `script`.
+private:
+    Xvfb() {
+        int fds[2];
+        if (pipe(fds) != 0) return;
+        pid_ = fork();
+        if (pid_ == 0) {
+            close(fds[0]);
+            const std::string fd = std::to_string(fds[1]);
+            execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1024x768x24", "-nolisten", "tcp",
+                   static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        close(fds[1]);
+        // The display number and a newline once the server accepts connections.
+        std::string number;
+        pollfd p{fds[0], POLLIN, 0};
+        char c = 0;
+        while (pid_ > 0 && poll(&p, 1, 20000) == 1 && read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+        close(fds[0]);
+        if (!number.empty()) display_ = ":" + number;
+    }
+    ~Xvfb() {
+        if (pid_ <= 0) return;
+        kill(pid_, SIGTERM);
+        waitpid(pid_, nullptr, 0);
+    }
+    pid_t pid_ = -1;
+    std::string display_;
+};
+
+bool haveXvfb() { return !Xvfb::display().empty(); }
+
+// The viewer on `mesh` on this process's Xvfb display, running `script`.
 Outcome view(const std::string& mesh, const std::string& script) {
     const std::string path = work("script.txt");
     writeText(path, script);
-    return run(std::string("xvfb-run -a -s '-screen 0 1024x768x24' '") + QUADTRI_CLI + "' view '" + mesh + "' --size " +
+    return run("DISPLAY=" + Xvfb::display() + " '" + QUADTRI_CLI + "' view '" + mesh + "' --size " +
                std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --level 3 --script '" + path + "'");
 }
 
@@ -66,7 +108,7 @@ Outcome view(const std::string& mesh, const std::string& script) {
 bool noDevice(const Outcome& r) { return r.status == 2 && r.errors.find("needs a Vulkan device") != std::string::npos; }
 
 #define SKIP_WITHOUT_XVFB()                                                                         \
-    if (!haveXvfb()) GTEST_SKIP() << "Xvfb is not installed (Debian: xvfb, xauth): the viewer needs a display"
+    if (!haveXvfb()) GTEST_SKIP() << "Xvfb is not installed or does not start (Debian: xvfb): the viewer needs a display"
 #define SKIP_WITHOUT_DEVICE(r)                                                      \
     if (noDevice(r)) {                                                              \
         if (std::getenv("QUADTRI_REQUIRE_VULKAN")) FAIL() << r.errors;              \
@@ -263,8 +305,8 @@ TEST(Viewer, ABadFileIsRefusedWithItsLine) {
 
 TEST(Viewer, WithoutAVulkanDeviceOneMessageAndStatus2) {
     SKIP_WITHOUT_XVFB();
-    const Outcome r = run(std::string("QUADTRI_VK_DEVICE=no-such-device xvfb-run -a '") + QUADTRI_CLI + "' view '" +
-                          kTorus + "'");
+    const Outcome r = run("QUADTRI_VK_DEVICE=no-such-device DISPLAY=" + Xvfb::display() + " '" + QUADTRI_CLI +
+                          "' view '" + kTorus + "'");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.errors.find("quadtri: view needs a Vulkan device that can draw to the window: "), std::string::npos)
         << r.errors;
