@@ -121,7 +121,7 @@ void Viewer::drawDisplayPanel() {
 void Viewer::drawSelectionPanel() {
     if (!ImGui::CollapsingHeader("Sharpness", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const std::size_t edges = document_.selectedEdges().size(), vertices = document_.selectedVertices().size();
-    ImGui::Text("Selected: %zu edge%s, %zu vertex%s", edges, edges == 1 ? "" : "s", vertices, vertices == 1 ? "" : "es");
+    ImGui::Text("Selected: %zu edge%s, %zu vert%s", edges, edges == 1 ? "" : "s", vertices, vertices == 1 ? "ex" : "ices");
     if (document_.hasSelection()) {
         float s = document_.selectionSharpness();
         bool infinite = s >= kInfiniteSharpness;
