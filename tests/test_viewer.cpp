@@ -268,6 +268,23 @@ TEST(Viewer, ClosingWithUnsavedEditsPromptsAndWithoutThemQuits) {
     EXPECT_FALSE(std::ifstream(never).good());
 }
 
+TEST(Viewer, TheThreeEvaluatorsDrawTheSamePicture) {
+    SKIP_WITHOUT_XVFB();
+    const std::string vulkan = work("vulkan.png"), cpu = work("cpu.png"), tbb = work("tbb.png");
+    // A creased cage in reflection lines: any difference in positions or normals shows.
+    const Outcome r = view(kTorus, "select-edge 1 2\nsharpness 2\nshading reflection-lines\n"
+                                   "evaluator vulkan\nscreenshot " + vulkan +
+                                   "\nevaluator cpu\nscreenshot " + cpu + "\nevaluator tbb\nscreenshot " + tbb + "\nquit\n");
+    SKIP_WITHOUT_DEVICE(r);
+    ASSERT_EQ(r.status, 0) << r.errors;
+    EXPECT_EQ(r.errors.find("alidation"), std::string::npos) << r.errors;
+    const render::Image v = render::readImage(vulkan), c = render::readImage(cpu), t = render::readImage(tbb);
+    // oneTBB's results are the CPU's bitwise; Vulkan's within 1e-5, which may move a stripe's or
+    // a silhouette's edge by a pixel here and there.
+    EXPECT_EQ(changedPixels(c, t), 0);
+    EXPECT_LT(changedPixels(v, c), kWidth * kHeight / 1000);
+}
+
 TEST(Viewer, AFileThatFailsToLoadKeepsTheMeshShown) {
     SKIP_WITHOUT_XVFB();
     const std::string bad = work("bad.obj"), saved = work("kept.obj");
