@@ -51,20 +51,24 @@ void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int
         uvs = std::move(cli::evaluateLevels(cli::EvaluatorKind::Cpu, {cli::fvarLevels(*refiner, 0, level, mesh.uvs, 2)})[0]);
 
     // Everything that can throw is done. The renderer lets go of the old evaluator's buffers
-    // before they go: the new evaluator's, or its own (zero until the first update).
+    // before they go (the new evaluator's, or its own, zero until the first update), and is
+    // given them again after the new level's surface.
     onDevice_ = kind == cli::EvaluatorKind::Vulkan;
-    if (onDevice_) {
-        auto& device = static_cast<realtime::VulkanFrameEvaluator&>(*evaluator);
+    const std::vector<float> zeros(onDevice_ ? 0 : 3 * std::size_t(tables->numPoints), 0.0f);
+    auto bindVertices = [&] {
+        if (!onDevice_) return renderer_.uploadVertices(zeros.data(), zeros.data(), tables_->numPoints);
+        auto& device = static_cast<realtime::VulkanFrameEvaluator&>(*evaluator_);
         renderer_.useVertexBuffers({device.positions().buffer(), 0}, {device.normals().buffer(), 0});
-    } else {
-        const std::vector<float> zeros(3 * std::size_t(tables->numPoints), 0.0f);
-        renderer_.uploadVertices(zeros.data(), zeros.data(), tables->numPoints);
-    }
-    evaluator_ = std::move(evaluator);  // the old one read the old tables
+    };
+    evaluator_.swap(evaluator);
+    tables_.swap(tables);
+    bindVertices();
+    evaluator.reset();  // the old one, which read the old tables
+    tables.reset();
     refiner_ = std::move(refiner);
-    tables_ = std::move(tables);
     level_ = level;
     render::showLevel(renderer_, *refiner_, level, uvs.empty() ? nullptr : uvs.data());
+    bindVertices();
     rest_ = mesh.positions;
     cage_ = rest_;
     skin_.reset();
