@@ -285,6 +285,19 @@ TEST(Viewer, TheThreeEvaluatorsDrawTheSamePicture) {
     EXPECT_LT(changedPixels(v, c), kWidth * kHeight / 1000);
 }
 
+TEST(Viewer, ALoadedTextureReplacesTheChecker) {
+    SKIP_WITHOUT_XVFB();
+    // A cube with UVs, textured with the checker, then with the checker's own screenshot.
+    const std::string cube = std::string(QUADTRI_TEST_MESHES) + "/osd/catmark_cube.obj";
+    const std::string checker = work("checker.png"), loaded = work("loaded.png");
+    const Outcome r = view(cube, "shading textured\nscreenshot " + checker + "\ntexture " + checker + "\nscreenshot " +
+                                     loaded + "\nquit\n");
+    SKIP_WITHOUT_DEVICE(r);
+    ASSERT_EQ(r.status, 0) << r.errors;
+    EXPECT_EQ(r.errors.find("alidation"), std::string::npos) << r.errors;
+    EXPECT_GT(changedPixels(render::readImage(checker), render::readImage(loaded)), kWidth * kHeight / 20);
+}
+
 TEST(Viewer, AFileThatFailsToLoadKeepsTheMeshShown) {
     SKIP_WITHOUT_XVFB();
     const std::string bad = work("bad.obj"), saved = work("kept.obj");
@@ -307,6 +320,9 @@ TEST(Viewer, ScriptErrorsNameTheLineAndExitWithStatus2) {
     r = view(kTorus, "scheme no-such\n");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.errors.find("script.txt:1: unknown scheme 'no-such'"), std::string::npos) << r.errors;
+    r = view(kTorus, "frames 2\ntexture /nonexistent/picture.png\n");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.errors.find("script.txt:2: /nonexistent/picture.png: "), std::string::npos) << r.errors;
     r = view(kTorus, "frames 2\nzoom 3\n");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.errors.find("script.txt:2: unknown command 'zoom'"), std::string::npos) << r.errors;

@@ -28,7 +28,7 @@ const std::map<std::string, Form>& forms() {
         {"shading", {ScriptVerb::Shading, "w"}},           {"evaluator", {ScriptVerb::Evaluator, "w"}},
         {"deform", {ScriptVerb::Deform, "w"}},             {"camera", {ScriptVerb::Camera, "nn"}},
         {"frames", {ScriptVerb::Frames, "i"}},             {"load", {ScriptVerb::Load, "w"}},
-        {"save", {ScriptVerb::Save, "w"}},                 {"screenshot", {ScriptVerb::Screenshot, "w"}},
+        {"save", {ScriptVerb::Save, "w"}},                 {"texture", {ScriptVerb::Texture, "w"}},                 {"screenshot", {ScriptVerb::Screenshot, "w"}},
         {"screenshot-window", {ScriptVerb::ScreenshotWindow, "w"}},
         {"close", {ScriptVerb::Close, ""}},                 {"quit", {ScriptVerb::Quit, ""}}};
     return table;

@@ -38,6 +38,7 @@ enum class ScriptVerb {
     Frames,        // frames N: render N more frames
     Load,          // load PATH (a file that fails is reported on stderr; the mesh shown stays)
     Save,          // save PATH: the cage with its tags
+    Texture,       // texture PATH: a PNG or JPEG for textured shading (and that shading)
     Screenshot,    // screenshot PATH: the view as PNG, without the panel
     ScreenshotWindow,  // screenshot-window PATH: the same with the panel
     Close,         // close: the window's close button (with unsaved edits the prompt opens instead)

@@ -271,6 +271,17 @@ void Viewer::frame(render::Image* screenshot, bool withPanel) {
     drawMs_ = std::chrono::duration<double, std::milli>(Clock::now() - drawStart).count();
 }
 
+void Viewer::loadTexture(const std::string& path) {
+    try {
+        texture_ = render::readImage(path);
+    } catch (const std::runtime_error& e) {
+        message_ = e.what();
+        return;
+    }
+    for (auto& surface : surfaces_) surface->renderer().setTexture(&*texture_);
+    view_.shading = render::Shading::Textured;
+}
+
 void Viewer::saveScreenshot(const std::string& path, bool withPanel) {
     render::Image image;
     // A swapchain gone out of date draws nothing: the next frame makes a new one.

@@ -63,6 +63,8 @@ private:
     void closeRequested();                      // the same for quitting
     void load(const std::string& path);         // shows the error and keeps the mesh on failure
     void saveScreenshot(const std::string& path, bool withPanel = false);
+    // A PNG or JPEG for textured shading; a failure shows in message_ and keeps the old one.
+    void loadTexture(const std::string& path);
     void runCommand(const ScriptCommand& command, const std::string& script);
 
     // Declared in the order of creation: each goes before what it was made from.
@@ -97,7 +99,7 @@ private:
     enum class Pending { None, Quit, Load, Screenshot } pending_ = Pending::None;
     bool wantsScreenshot_ = false;
     std::string pendingPath_;
-    std::array<char, 1024> loadPath_{}, savePath_{}, shotPath_{};
+    std::array<char, 1024> loadPath_{}, savePath_{}, shotPath_{}, texturePath_{};
 };
 
 }  // namespace quadtri::view

@@ -76,6 +76,11 @@ void Viewer::drawFilePanel() {
     ImGui::InputText("##shot", shotPath_.data(), shotPath_.size());
     ImGui::SameLine();
     if (ImGui::Button("PNG")) pending_ = pending_ == Pending::None ? Pending::Screenshot : pending_;
+    if (document_.mesh().hasUVs()) {
+        ImGui::InputText("##texture", texturePath_.data(), texturePath_.size());
+        ImGui::SameLine();
+        if (ImGui::Button("Texture")) loadTexture(texturePath_.data());
+    }
 }
 
 void Viewer::drawSurfacePanel() {

@@ -102,6 +102,10 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
                 message_.clear();
             }
             break;
+        case ScriptVerb::Texture:
+            loadTexture(w[0]);
+            if (!message_.empty()) throw ScriptError(where + message_);
+            break;
         case ScriptVerb::Save:
             try {
                 document_.save(w[0]);
