@@ -11,6 +11,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(cmake ninja-build g++ libgtest-dev libgmock-dev libeigen3-dev libosd-dev libcli11-dev libtbb-dev libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers pkgconf libtinygltf-dev libmeshoptimizer-dev libstb-dev libglm-dev)
+# The viewer (window, UI) and its test under Xvfb.
+PACKAGES+=(libglfw3-dev libimgui-dev xvfb xauth)
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc)}
 

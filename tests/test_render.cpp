@@ -22,7 +22,6 @@
 #include "tools/render/gpu_device.h"
 #include "tools/render/level_surface.h"
 #include "tools/render/offscreen_target.h"
-#include "tools/render/picking.h"
 #include "tools/render/renderer.h"
 
 namespace quadtri::test {
@@ -446,33 +445,6 @@ TEST_F(RenderTest, TheCageIsDrawnInItsSharpnessColours) {
         }
     EXPECT_GT(infinitePixels, 100) << "the creased rim";
     EXPECT_GT(smoothPixels, 4 * infinitePixels) << "the other edges";
-}
-
-TEST(RenderData, PickingFindsTheEdgeAndVertexUnderThePixel) {
-    const Scene s = makeScene(tube(4, 0.0f), 0);
-    const render::Cage cage = render::cageOf(s.refiner->level(0), s.mesh.positions.data());
-    const render::ViewSettings view = viewOf(s, render::Shading::Smooth, 30.0f, 25.0f);
-    const VkExtent2D extent{kSize, kSize};
-    const std::vector<glm::vec2> p = project(s.mesh.positions, view, kSize, kSize);
-    auto distanceToEdge = [&](int e, glm::vec2 q) {
-        const glm::vec2 a = p[cage.edges[2 * std::size_t(e)]], b = p[cage.edges[2 * std::size_t(e) + 1]];
-        const float t = std::clamp(glm::dot(q - a, b - a) / glm::dot(b - a, b - a), 0.0f, 1.0f);
-        return glm::length(q - (a + t * (b - a)));
-    };
-    for (int e = 0; e < int(cage.edges.size() / 2); ++e) {
-        const glm::vec2 mid = 0.5f * (p[cage.edges[2 * std::size_t(e)]] + p[cage.edges[2 * std::size_t(e) + 1]]);
-        const int picked = render::pickEdge(cage, view, extent, mid + glm::vec2(0.7f, -0.4f));
-        ASSERT_GE(picked, 0) << "edge " << e;
-        EXPECT_LE(distanceToEdge(picked, mid), distanceToEdge(e, mid) + 1.7f) << "edge " << e << " picked " << picked;
-    }
-    for (int v = 0; v < s.mesh.numVertices(); ++v) {
-        const int picked = render::pickVertex(cage, view, extent, p[std::size_t(v)] + glm::vec2(1.0f, 1.0f));
-        ASSERT_GE(picked, 0) << "vertex " << v;
-        EXPECT_LE(glm::length(p[std::size_t(picked)] - p[std::size_t(v)]), 3.0f)
-            << "vertex " << v << " picked " << picked;
-    }
-    EXPECT_EQ(render::pickEdge(cage, view, extent, glm::vec2(0.0f, 0.0f)), -1) << "nothing at the corner";
-    EXPECT_EQ(render::pickVertex(cage, view, extent, glm::vec2(0.0f, 0.0f)), -1) << "nothing at the corner";
 }
 
 TEST(RenderData, RootFacesFollowTheSplits) {

@@ -16,6 +16,7 @@
 #include "tools/byte_size.h"
 #include "tools/commands.h"
 #include "tools/obj_io.h"
+#include "tools/view/view_command.h"
 
 namespace {
 
@@ -221,6 +222,31 @@ void addRenderFlags(CLI::App& cmd, cli::RenderArgs& args, const std::map<std::st
         ->check(CLI::PositiveNumber);
 }
 
+void addViewFlags(CLI::App& cmd, view::ViewerArgs& args, const std::map<std::string, cli::EvaluatorKind>& evaluators) {
+    addMeshFlags(cmd, args.mesh);
+    addLevel(cmd, "--level,-l", args.level, "Refinement level shown first (0-6)")->check(CLI::Range(0, 6));
+    cmd.add_option_function<std::string>(
+           "--evaluator", [&args, evaluators](const std::string& s) { args.evaluator = evaluators.at(s); },
+           "Evaluator at start: cpu, tbb, or vulkan (default; on the viewer's device, its buffers drawn directly)")
+        ->check(oneOf(evaluators, "evaluator"));
+    cmd.add_option("--texture", args.texture, "PNG or JPEG image for textured shading (default: a checker)");
+    cmd.add_option("--script", args.script,
+                   "Run the commands of FILE (README, \"The viewer\"), one per rendered frame, then quit");
+    cmd.add_option_function<std::string>(
+           "--size", [&args](const std::string& s) { std::sscanf(s.c_str(), "%dx%d", &args.width, &args.height); },
+           "Window size WxH (default 1280x800)")
+        ->type_name("WxH")
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                int w = 0, h = 0;
+                char tail = 0;
+                const bool ok = std::sscanf(s.c_str(), "%dx%d%c", &w, &h, &tail) == 2 && w >= 64 && h >= 64 &&
+                                w <= 8192 && h <= 8192;
+                return ok ? std::string() : "'" + s + "' is not a size: expected WxH, each 64 to 8192, e.g. 1280x800";
+            },
+            "WxH"));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -291,6 +317,11 @@ int main(int argc, char** argv) {
     CLI::App* renderCmd = app.add_subcommand("render", "Draw the refined surface offscreen with Vulkan and write a PNG");
     addRenderFlags(*renderCmd, render, evaluators);
 
+    view::ViewerArgs viewer;
+    CLI::App* viewCmd = app.add_subcommand("view", "Open the interactive viewer: cage and refined surface, sharpness "
+                                                   "editing, live schemes and evaluators (README, \"The viewer\")");
+    addViewFlags(*viewCmd, viewer, evaluators);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -302,11 +333,13 @@ int main(int argc, char** argv) {
     const std::string& input = *refineCmd ? refine.mesh.input
                                : *infoCmd   ? info.mesh.input
                                : *renderCmd ? render.mesh.input
+                               : *viewCmd   ? viewer.mesh.input
                                             : demo.mesh.input;
     try {
         if (*refineCmd) return cli::runRefine(refine);
         if (*infoCmd) return cli::runInfo(info);
         if (*renderCmd) return cli::runRender(render);
+        if (*viewCmd) return view::runView(viewer);
         return cli::runDemo(demo);
     } catch (const io::ObjError& e) {
         std::cerr << "quadtri: " << e.what() << "\n";  // already "file:line: problem"
