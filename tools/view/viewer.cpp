@@ -179,9 +179,12 @@ int Viewer::viewportCount() const { return choices_.compare ? 2 : 1; }
 
 VkRect2D Viewer::viewport(int index) const {
     const VkExtent2D size = swapchain_->extent();
-    if (viewportCount() == 1) return {{0, 0}, size};
-    const uint32_t half = size.width / 2;
-    return {{int32_t(index * half), 0}, {index == 0 ? half : size.width - half, size.height}};
+    if (viewportCount() == 1) return {{0, 0}, size};  // the panel floats over its right side
+    // Side by side, both views share what the panel leaves free (it starts at the right edge), so
+    // that neither hides behind it.
+    const uint32_t free = size.width - std::min(kPanelReserve, size.width / 3);
+    const uint32_t half = free / 2;
+    return {{int32_t(index * half), 0}, {index == 0 ? half : free - half, size.height}};
 }
 
 glm::mat4 Viewer::viewProjection(int index) const {

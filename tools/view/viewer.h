@@ -57,6 +57,9 @@ private:
     void frameMesh();
     // A viewport's rectangle: the window, or its left / right half when comparing.
     int viewportCount() const;
+    // The panel's width and the margin it keeps from the window's right edge, in pixels.
+    static constexpr float kPanelWidth = 330.0f, kPanelMargin = 8.0f;
+    static constexpr uint32_t kPanelReserve = uint32_t(kPanelWidth + kPanelMargin);
     VkRect2D viewport(int index) const;
     glm::mat4 viewProjection(int index) const;
     void requestLoad(const std::string& path);  // through the unsaved-edits prompt

@@ -39,9 +39,8 @@ void legendEntry(const char* label, glm::vec3 color) {
 
 void Viewer::drawPanel() {
     const ImGuiIO& io = ImGui::GetIO();
-    const float width = 330.0f;
-    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width - 8.0f, 8.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y - 16.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kPanelWidth - kPanelMargin, kPanelMargin), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, io.DisplaySize.y - 2 * kPanelMargin), ImGuiCond_FirstUseEver);
     ImGui::Begin("quadtri");
     if (!message_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
@@ -56,6 +55,14 @@ void Viewer::drawPanel() {
     drawTimings();
     ImGui::End();
     drawConfirmation();
+    if (viewportCount() == 2) {  // which scheme each side shows
+        for (int i = 0; i < 2; ++i) {
+            const VkRect2D r = viewport(i);
+            const Scheme scheme = i == 0 ? choices_.scheme : *choices_.compare;
+            ImGui::GetBackgroundDrawList()->AddText(ImVec2(float(r.offset.x) + 12.0f, 10.0f),
+                                                    IM_COL32(230, 230, 230, 255), toString(scheme));
+        }
+    }
 }
 
 void Viewer::drawFilePanel() {
