@@ -15,6 +15,7 @@
 
 #include "bench/compare.h"
 #include "bench/osd_topology.h"
+#include "bench/peak_memory.h"
 #include "bench/timing.h"
 
 namespace quadtri::bench {
@@ -33,6 +34,7 @@ struct OsdLimitCase::State {
     std::vector<float> s, t;  // the locations, per control face in face order
     std::unique_ptr<const LimitTable> table;
     std::vector<float> position, du, dv, normal;
+    MemoryFigures memory;  // the table's build, the table and the four outputs
 
     State(const ControlMesh& m, OsdScheme sc, int l) : mesh(m), scheme(sc), level(l) {}
 
@@ -96,6 +98,7 @@ OsdLimitCase::~OsdLimitCase() = default;
 
 void OsdLimitCase::prepare() {
     State& st = *s_;
+    const PeakMemory peak;
     std::vector<Far::LimitStencilTableFactory::LocationArray> where;
     st.locations(where);
     {
@@ -109,6 +112,12 @@ void OsdLimitCase::prepare() {
     st.position.assign(3 * n, 0.0f);
     st.du = st.dv = st.normal = st.position;
     st.eval<Osd::CpuEvaluator>();
+    const LimitTable& t = *st.table;
+    st.memory.tableBytes = t.GetSizes().size() * sizeof(int) + t.GetOffsets().size() * sizeof(int) +
+                           t.GetControlIndices().size() * sizeof(int) +
+                           (t.GetWeights().size() + t.GetDuWeights().size() + t.GetDvWeights().size()) * sizeof(float);
+    st.memory.bufferBytes = 4 * st.position.size() * sizeof(float);
+    st.memory.peakResidentBytes = peak.peakAboveStart();  // not the reference below
 
     // The reference: the exact limit of every vertex of the uniformly refined level.
     std::unique_ptr<Far::TopologyRefiner> r = st.refiner();
@@ -150,12 +159,10 @@ int OsdLimitCase::numPoints() const { return s_->table->GetNumStencils(); }
 OsdLimitFigures OsdLimitCase::measure(int reps) {
     State& st = *s_;
     OsdLimitFigures f;
-    f.evalCpuMs = medianMs(reps, [&st] { st.eval<Osd::CpuEvaluator>(); });
-    f.evalOmpMs = medianMs(reps, [&st] { st.eval<Osd::OmpEvaluator>(); });
-    const LimitTable& t = *st.table;
-    f.tableBytes = t.GetSizes().size() * sizeof(int) + t.GetOffsets().size() * sizeof(int) +
-                   t.GetControlIndices().size() * sizeof(int) +
-                   (t.GetWeights().size() + t.GetDuWeights().size() + t.GetDvWeights().size()) * sizeof(float);
+    f.evalCpuMs = timeMs(reps, [&st] { st.eval<Osd::CpuEvaluator>(); });
+    f.evalOmpMs = timeMs(reps, [&st] { st.eval<Osd::OmpEvaluator>(); });
+    f.tableBytes = st.memory.tableBytes;
+    f.memory = st.memory;
     return f;
 }
 
