@@ -236,6 +236,7 @@ int run(int argc, char** argv) {
     result.cpu = cpuModel();
     for (int i = 0; i < argc; ++i) result.command += (i ? " " : "") + std::string(i ? argv[i] : "quadtri-bench");
     result.threads = tbb::this_task_arena::max_concurrency();
+    result.repetitions = reps;
     std::cerr << "memcpy bandwidth (256 MiB, 1 and " << result.threads << " threads)...\n";
     result.memcpyLarge = measureMemcpy(std::size_t(256) << 20, result.threads, kMemcpyReps);
 
@@ -244,6 +245,7 @@ int run(int argc, char** argv) {
     try {
         vulkan = std::make_unique<VulkanContext>();
         std::cerr << "Vulkan device: " << vulkan->deviceName() << "\n";
+        result.vulkanDevice = vulkan->deviceName();
     } catch (const VulkanError& e) {
         std::cerr << "no Vulkan timings: " << e.what() << "\n";
     }

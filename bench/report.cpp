@@ -184,7 +184,9 @@ void writeJson(const std::string& path, const BenchResult& r) {
     std::ofstream f(path);
     if (!f) throw std::runtime_error("cannot write " + path);
     f << "{\n  \"date\": " << jsonString(r.date) << ", \"cpu\": " << jsonString(r.cpu) << ",\n  \"command\": "
-      << jsonString(r.command) << ", \"threads\": " << r.threads << ",\n  \"memcpy\": " << json(r.memcpyLarge)
+      << jsonString(r.command) << ", \"repetitions\": " << r.repetitions << ", \"threads\": " << r.threads
+      << ", \"vulkan_device\": " << (r.vulkanDevice.empty() ? "null" : jsonString(r.vulkanDevice))
+      << ",\n  \"memcpy\": " << json(r.memcpyLarge)
       << ",\n  \"cases\": [";
     for (std::size_t i = 0; i < r.cases.size(); ++i) {
         f << (i ? ",\n" : "\n");
