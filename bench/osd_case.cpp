@@ -6,6 +6,7 @@
 #include <opensubdiv/osd/bufferDescriptor.h>
 #include <opensubdiv/osd/cpuEvaluator.h>
 #include <opensubdiv/osd/ompEvaluator.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cstring>
@@ -97,17 +98,17 @@ struct OsdCase::State {
         const int vertices = factorize ? lastCount() : numControl + firstStencil.back();
         Way w{factorize, omp, width, std::vector<float>(std::size_t(width) * std::size_t(vertices), 0.0f)};
         if (!factorize) {
-            const std::vector<float> control = width == 4 ? control4 : mesh.positions;
+            const std::vector<float>& control = width == 4 ? control4 : mesh.positions;
             std::copy(control.begin(), control.end(), w.buffer.begin());
         }
         return w;
     }
 
     // Stencils [start, end) of `t` from src to dst (descriptors at the range's first source and
-    // destination vertex). Osd::CpuEvaluator's 4- and 8-float SIMD path reads past the range when
-    // start > 0 (CpuEvalStencils advances `sizes` by start, then its kernel indexes sizes from
-    // start again): it is given arrays already offset to the range and start = 0, which its
-    // generic path reads the same way. Osd::OmpEvaluator has no such path and reads `offsets`
+    // destination vertex). Osd::CpuEvaluator's 4- and 8-float SIMD path misreads a range with
+    // start > 0 (CpuEvalStencils advances `sizes` by start, then its kernel indexes sizes, and
+    // writes dst, from start again: past the arrays' end on the last level): it is given arrays
+    // already offset to the range and start = 0, which its generic path reads the same way. Osd::OmpEvaluator has no such path and reads `offsets`
     // as absolute positions: it gets the whole arrays and the range.
     template <class Evaluator>
     static void evalRange(const Table& t, const float* src, const Osd::BufferDescriptor& srcDesc, float* dst,
@@ -164,6 +165,8 @@ OsdCase::~OsdCase() = default;
 
 void OsdCase::prepare() {
     State& s = *s_;
+    // OpenMP on as many threads as the TbbEvaluator it is compared with.
+    Osd::OmpEvaluator::SetNumThreads(tbb::this_task_arena::max_concurrency());
     s.ways.clear();
     s.control4 = padded(s.mesh.positions);
     {

@@ -8,6 +8,7 @@
 #include <opensubdiv/osd/bufferDescriptor.h>
 #include <opensubdiv/osd/cpuEvaluator.h>
 #include <opensubdiv/osd/ompEvaluator.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -98,6 +99,8 @@ OsdLimitCase::~OsdLimitCase() = default;
 
 void OsdLimitCase::prepare() {
     State& st = *s_;
+    // OpenMP on as many threads as the TbbEvaluator it is compared with.
+    Osd::OmpEvaluator::SetNumThreads(tbb::this_task_arena::max_concurrency());
     const PeakMemory peak;
     std::vector<Far::LimitStencilTableFactory::LocationArray> where;
     st.locations(where);

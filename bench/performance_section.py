@@ -218,17 +218,19 @@ def summary(r):
     omp = span([osd_best(c["osd"], "omp", w)[1] / osd_best(c["osd"], "cpu", w)[1] for c in deep for w in (3, 4)])
     bandwidth = span([gbps(c["quadtri"]["compulsory_bytes"], q(c, "eval_threaded_ms")) / r["memcpy"]["gbps_all"]
                       for c in deep])
+    bandwidth1 = span([gbps(c["quadtri"]["compulsory_bytes"], q(c, "eval_serial_ms")) / r["memcpy"]["gbps_1t"]
+                       for c in deep])
     osd_best_ways = sorted({way_name(osd_best(c["osd"])[0]) for c in deep})
     return [
         f"Ratios at {where} (OpenSubdiv / quadtri, medians):",
         f"- Evaluation, serial: {serial}x OpenSubdiv's best `CpuEvaluator` way (quadtri 3 floats); like width, both"
         f" padded to 4 floats: {serial4}x; both at 3 floats: {serial3}x. Padding makes OpenSubdiv's serial evaluation"
-        f" {pad}x faster (its SIMD path).",
+        f" {pad}x faster (its SIMD path). quadtri's serial evaluation moves its compulsory bytes at {bandwidth1} of"
+        f" the 1-thread 256 MiB memcpy bandwidth.",
         f"- Evaluation, {n} threads: `TbbEvaluator` {threaded}x OpenSubdiv's best way on any evaluator"
         f" ({'; '.join(osd_best_ways)}); at 4 floats {threaded4}x. Its `OmpEvaluator` takes {omp}x the time of"
         f" its `CpuEvaluator` at the same width (OpenSubdiv has no threaded table build). quadtri's threaded"
-        f" evaluation moves its compulsory bytes at {bandwidth} of the {n}-thread 256 MiB memcpy bandwidth"
-        f" (as a fraction).",
+        f" evaluation moves its compulsory bytes at {bandwidth} of the {n}-thread 256 MiB memcpy bandwidth.",
         f"- Build (topology and tables): {build1}x OpenSubdiv's faster table kind with quadtri on 1 thread,"
         f" {build}x with quadtri on {n} threads (OpenSubdiv's factory is serial).",
     ]
@@ -256,7 +258,7 @@ def section(r, note):
         BEGIN,
         "",
         f"Measured {r['date']} with `{r['command']}` on {r['cpu']}, {r['threads']} threads (oneTBB's concurrency;"
-        f" OpenMP's default is the same machine's cores){'; ' + note if note else ''}. Each time is the median of"
+        f" OpenSubdiv's OpenMP set to the same){'; ' + note if note else ''}. Each time is the median of"
         f" {r['repetitions']} repetitions after a warm-up, the run's fastest and slowest in brackets; written by"
         " `python3 bench/performance_section.py bench.json`.",
         "",
