@@ -253,7 +253,6 @@ def limit_summary(r):
 
 def section(r, note):
     m = r["memcpy"]
-    vulkan = r.get("vulkan_device")
     lines = [
         BEGIN,
         "",
@@ -267,7 +266,22 @@ def section(r, note):
         "",
     ]
     lines += summary(r)
-    lines += ["", "Evaluation on one thread (quadtri `CpuEvaluator`; OpenSubdiv `CpuEvaluator`, the faster of its"
+    if not r["cases"]:  # a --limit run
+        lines += ["No refinement cases in this run."]
+    else:
+        lines += case_tables(r)
+    if r["limit_cases"]:
+        lines += ["", "Limit positions + unit normals per frame (3 floats; the chain: per-level tables, then the"
+                  " limit table over the last level):", ""]
+        lines += limit_table(r)
+        lines += [""] + limit_summary(r)
+    lines += ["", END]
+    return "\n".join(lines) + "\n"
+
+
+def case_tables(r):
+    vulkan = r.get("vulkan_device")
+    lines = ["", "Evaluation on one thread (quadtri `CpuEvaluator`; OpenSubdiv `CpuEvaluator`, the faster of its"
               " per-level and factorized tables at each width; 3f / 4f: floats a vertex; last column: quadtri's"
               " compulsory bytes per second over 1-thread memcpy of a copy the size of the working set, and of"
               " 256 MiB):", ""]
@@ -287,13 +301,7 @@ def section(r, note):
         lines += ["", f"Vulkan on {vulkan}:", ""] + vt
     else:
         lines += ["", "No Vulkan figures in this run."]
-    if r["limit_cases"]:
-        lines += ["", "Limit positions + unit normals per frame (3 floats; the chain: per-level tables, then the"
-                  " limit table over the last level):", ""]
-        lines += limit_table(r)
-        lines += [""] + limit_summary(r)
-    lines += ["", END]
-    return "\n".join(lines) + "\n"
+    return lines
 
 
 def main():
