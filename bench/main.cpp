@@ -115,8 +115,9 @@ std::string schemeName(const CaseSpec& spec) {
     return qt + (*spec.osd == OsdScheme::Catmark ? "/catmark" : "/loop");
 }
 
-// Copies per memcpy figure: small buffers copy in tens of microseconds, so more of them.
-constexpr int kMemcpyReps = 11;
+// Copies per memcpy figure: small buffers copy in tens of microseconds, so more of them than
+// the cases' repetitions (--quick: as many, to stay short under the sanitizers).
+int memcpyReps(int reps) { return reps < 5 ? reps : 11; }
 
 CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, int threads,
                    [[maybe_unused]] VulkanContext* vulkan) {
@@ -142,7 +143,7 @@ CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, int 
         std::cerr << "  agree with OpenSubdiv: " << match.describe() << "\n";
     }
     result.quadtri = qt.measure(reps);
-    result.memcpyWorkingSet = measureMemcpy(std::size_t(result.quadtri.compulsoryBytes / 2), threads, kMemcpyReps);
+    result.memcpyWorkingSet = measureMemcpy(std::size_t(result.quadtri.compulsoryBytes / 2), threads, memcpyReps(reps));
 #ifdef QUADTRI_BENCH_VULKAN
     if (vulkan) {
         const VulkanFigures v = measureVulkan(*vulkan, qt.refiner(), mesh.positions, qt.lastLevel(),
@@ -238,7 +239,7 @@ int run(int argc, char** argv) {
     result.threads = tbb::this_task_arena::max_concurrency();
     result.repetitions = reps;
     std::cerr << "memcpy bandwidth (256 MiB, 1 and " << result.threads << " threads)...\n";
-    result.memcpyLarge = measureMemcpy(std::size_t(256) << 20, result.threads, kMemcpyReps);
+    result.memcpyLarge = measureMemcpy(std::size_t(256) << 20, result.threads, memcpyReps(reps));
 
 #ifdef QUADTRI_BENCH_VULKAN
     std::unique_ptr<VulkanContext> vulkan;

@@ -228,8 +228,8 @@ def summary(r):
         f" {pad}x faster (its SIMD path). quadtri's serial evaluation moves its compulsory bytes at {bandwidth1} of"
         f" the 1-thread 256 MiB memcpy bandwidth.",
         f"- Evaluation, {n} threads: `TbbEvaluator` {threaded}x OpenSubdiv's best way on any evaluator"
-        f" ({'; '.join(osd_best_ways)}); at 4 floats {threaded4}x. Its `OmpEvaluator` takes {omp}x the time of"
-        f" its `CpuEvaluator` at the same width (OpenSubdiv has no threaded table build). quadtri's threaded"
+        f" ({'; '.join(osd_best_ways)}); at 4 floats {threaded4}x. Its `OmpEvaluator` (no SIMD path) takes {omp}x"
+        f" the time of its `CpuEvaluator` at the same width. quadtri's threaded"
         f" evaluation moves its compulsory bytes at {bandwidth} of the {n}-thread 256 MiB memcpy bandwidth.",
         f"- Build (topology and tables): {build1}x OpenSubdiv's faster table kind with quadtri on 1 thread,"
         f" {build}x with quadtri on {n} threads (OpenSubdiv's factory is serial).",
