@@ -106,13 +106,13 @@ struct CaseResult {
 };
 
 struct BenchResult {
-    std::string date;      // UTC, ISO 8601
-    std::string cpu;       // /proc/cpuinfo's model name
-    std::string command;   // the bench's own command line
-    int threads = 0;       // oneTBB's concurrency: the threaded figures' "all threads"
-    std::string vulkanDevice;  // empty: no Vulkan figures
-    int repetitions = 0;       // timed runs per figure, after one warm-up
-    MemcpyFigures memcpyLarge;  // 256 MiB (--quick: 32 MiB)
+    std::string date;           // UTC, ISO 8601
+    std::string cpu;            // /proc/cpuinfo's model name
+    std::string command;        // the bench's own command line
+    int threads = 0;            // oneTBB's concurrency: the threaded figures' "all threads"
+    std::string vulkanDevice;   // empty: no Vulkan figures
+    int repetitions = 0;        // timed runs per figure, after one warm-up
+    MemcpyFigures memcpyLarge;  // 256 MiB
     std::vector<CaseResult> cases;
     std::vector<LimitCaseResult> limitCases;
 };
