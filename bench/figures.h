@@ -41,7 +41,9 @@ struct QuadtriFigures {
 // One way OpenSubdiv evaluates the case's last level.
 struct OsdEvaluation {
     std::string table;      // "per_level" (level by level) or "factorized" (control vertices to the last level)
-    std::string evaluator;  // "cpu" (Osd::CpuEvaluator, serial) or "omp" (Osd::OmpEvaluator, all threads)
+    // "cpu" (Osd::CpuEvaluator, serial), "omp" (Osd::OmpEvaluator, all threads) or "far"
+    // (Far::StencilTable::UpdateValues, serial, compiled into the bench over a Width-float vertex)
+    std::string evaluator;
     int width = 3;          // floats a vertex: 3, or 4 (xyz padded, its SIMD path for Osd::CpuEvaluator)
     Timing ms;
 };

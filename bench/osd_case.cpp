@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -33,13 +34,38 @@ using TablePtr = std::unique_ptr<const Table>;
 
 namespace {
 
+// OpenSubdiv's CPU ways of applying a table: Osd::CpuEvaluator and Osd::OmpEvaluator (compiled
+// into libosdCPU), and Far::StencilTable::UpdateValues, a template compiled into the bench over
+// the vertex type it is given.
+enum class Evaluator { Cpu, Omp, Far };
+
+const char* evaluatorName(Evaluator e) { return e == Evaluator::Cpu ? "cpu" : e == Evaluator::Omp ? "omp" : "far"; }
+
 // One way of evaluating the case: a table, an evaluator, a width, and the buffer it writes
 // (per-level: the control vertices, then the vertices of levels 1..L; factorized: the last level).
 struct Way {
     bool factorized;
-    bool omp;
+    Evaluator evaluator;
     int width;
     std::vector<float> buffer;
+};
+
+// `Width`-float vertices over a float array, as UpdateValues indexes them: Clear and
+// AddWithWeight sum in the order of every other path, so the results are bitwise theirs.
+template <int Width, class Float>
+struct VertexView {
+    Float* data;
+    struct Vertex {
+        Float* p;
+        void Clear() {
+            for (int c = 0; c < Width; ++c) p[c] = 0.0f;
+        }
+        template <class Source>
+        void AddWithWeight(const Source& src, float weight) {
+            for (int c = 0; c < Width; ++c) p[c] += weight * src.p[c];
+        }
+    };
+    Vertex operator[](int i) const { return {data + std::ptrdiff_t(i) * Width}; }
 };
 
 // xyz of each `width`-float vertex of `values` from vertex `first` on.
@@ -94,9 +120,9 @@ struct OsdCase::State {
 
     int lastCount() const { return firstStencil[level] - firstStencil[level - 1]; }
 
-    Way makeWay(bool factorize, bool omp, int width) const {
+    Way makeWay(bool factorize, Evaluator evaluator, int width) const {
         const int vertices = factorize ? lastCount() : numControl + firstStencil.back();
-        Way w{factorize, omp, width, std::vector<float>(std::size_t(width) * std::size_t(vertices), 0.0f)};
+        Way w{factorize, evaluator, width, std::vector<float>(std::size_t(width) * std::size_t(vertices), 0.0f)};
         if (!factorize) {
             const std::vector<float>& control = width == 4 ? control4 : mesh.positions;
             std::copy(control.begin(), control.end(), w.buffer.begin());
@@ -108,48 +134,62 @@ struct OsdCase::State {
     // destination vertex). Osd::CpuEvaluator's 4- and 8-float SIMD path misreads a range with
     // start > 0 (CpuEvalStencils advances `sizes` by start, then its kernel indexes sizes, and
     // writes dst, from start again: past the arrays' end on the last level): it is given arrays
-    // already offset to the range and start = 0, which its generic path reads the same way. Osd::OmpEvaluator has no such path and reads `offsets`
-    // as absolute positions: it gets the whole arrays and the range.
-    template <class Evaluator>
+    // already offset to the range and start = 0, which its generic path reads the same way.
+    // Osd::OmpEvaluator has no such path and reads `offsets` as absolute positions: it gets the
+    // whole arrays and the range. UpdateValues writes destination start + i: it gets the
+    // destination's vertex 0 as the range's first less start.
+    template <Evaluator E>
     static void evalRange(const Table& t, const float* src, const Osd::BufferDescriptor& srcDesc, float* dst,
                           const Osd::BufferDescriptor& dstDesc, int start, int end) {
         const int* sizes = t.GetSizes().data();
         const int* offsets = t.GetOffsets().data();
         const int* indices = t.GetControlIndices().data();
         const float* weights = t.GetWeights().data();
-        if constexpr (std::is_same_v<Evaluator, Osd::CpuEvaluator>) {
+        if constexpr (E == Evaluator::Cpu) {
             const int first = offsets[start];
-            Evaluator::EvalStencils(src, srcDesc, dst, dstDesc, sizes + start, offsets + start, indices + first,
-                                    weights + first, 0, end - start);
+            Osd::CpuEvaluator::EvalStencils(src, srcDesc, dst, dstDesc, sizes + start, offsets + start, indices + first,
+                                            weights + first, 0, end - start);
+        } else if constexpr (E == Evaluator::Omp) {
+            Osd::OmpEvaluator::EvalStencils(src, srcDesc, dst, dstDesc, sizes, offsets, indices, weights, start, end);
         } else {
-            Evaluator::EvalStencils(src, srcDesc, dst, dstDesc, sizes, offsets, indices, weights, start, end);
+            auto update = [&](auto width) {
+                constexpr int n = decltype(width)::value;
+                const VertexView<n, const float> from{src + srcDesc.offset};
+                VertexView<n, float> to{dst + dstDesc.offset - std::ptrdiff_t(start) * n};
+                t.UpdateValues(from, to, start, end);
+            };
+            if (srcDesc.length == 4) update(std::integral_constant<int, 4>());
+            else update(std::integral_constant<int, 3>());
         }
     }
 
     // Level by level: the stencils of level L index level L-1's vertices from 0, so the source
     // descriptor starts at level L-1 in the buffer and the destination at level L. Within a level
     // the stencils are independent, so OmpEvaluator may run them in parallel.
-    template <class Evaluator>
+    template <Evaluator E>
     void evalPerLevel(Way& w) const {
         const int n = w.width;
         for (int L = 1; L <= level; ++L) {
             const int start = firstStencil[L - 1], end = firstStencil[L];
             const int srcFirst = L == 1 ? 0 : numControl + firstStencil[L - 2];
-            evalRange<Evaluator>(*perLevel, w.buffer.data(), Osd::BufferDescriptor(n * srcFirst, n, n), w.buffer.data(),
-                                 Osd::BufferDescriptor(n * (numControl + start), n, n), start, end);
+            evalRange<E>(*perLevel, w.buffer.data(), Osd::BufferDescriptor(n * srcFirst, n, n), w.buffer.data(),
+                         Osd::BufferDescriptor(n * (numControl + start), n, n), start, end);
         }
     }
 
-    template <class Evaluator>
+    template <Evaluator E>
     void evalFactorized(Way& w) const {
         const float* control = w.width == 4 ? control4.data() : mesh.positions.data();
         const Osd::BufferDescriptor desc(0, w.width, w.width);
-        evalRange<Evaluator>(*factorized, control, desc, w.buffer.data(), desc, 0, factorized->GetNumStencils());
+        evalRange<E>(*factorized, control, desc, w.buffer.data(), desc, 0, factorized->GetNumStencils());
     }
 
     void eval(Way& w) const {
-        if (w.factorized) w.omp ? evalFactorized<Osd::OmpEvaluator>(w) : evalFactorized<Osd::CpuEvaluator>(w);
-        else w.omp ? evalPerLevel<Osd::OmpEvaluator>(w) : evalPerLevel<Osd::CpuEvaluator>(w);
+        switch (w.evaluator) {
+        case Evaluator::Cpu: w.factorized ? evalFactorized<Evaluator::Cpu>(w) : evalPerLevel<Evaluator::Cpu>(w); break;
+        case Evaluator::Omp: w.factorized ? evalFactorized<Evaluator::Omp>(w) : evalPerLevel<Evaluator::Omp>(w); break;
+        case Evaluator::Far: w.factorized ? evalFactorized<Evaluator::Far>(w) : evalPerLevel<Evaluator::Far>(w); break;
+        }
     }
 
     // The last level's xyz as `w` wrote it.
@@ -179,7 +219,7 @@ void OsdCase::prepare() {
                 s.firstStencil.push_back(s.firstStencil.back() + refiner->GetLevel(L).GetNumVertices());
             s.perLevel = s.stencils(*refiner, false);
         }
-        s.ways.push_back(s.makeWay(false, false, 3));
+        s.ways.push_back(s.makeWay(false, Evaluator::Cpu, 3));
         s.eval(s.ways[0]);
         s.memory.tableBytes = tableBytes(*s.perLevel);
         s.memory.bufferBytes = s.ways[0].buffer.size() * sizeof(float);
@@ -194,9 +234,10 @@ void OsdCase::prepare() {
         throw std::runtime_error(m.str());
     }
     for (bool factorize : {false, true})
-        for (bool omp : {false, true})
+        for (Evaluator evaluator : {Evaluator::Cpu, Evaluator::Omp, Evaluator::Far})
             for (int width : {3, 4})
-                if (factorize || omp || width != 3) s.ways.push_back(s.makeWay(factorize, omp, width));
+                if (factorize || evaluator != Evaluator::Cpu || width != 3)
+                    s.ways.push_back(s.makeWay(factorize, evaluator, width));
     for (std::size_t i = 1; i < s.ways.size(); ++i) s.eval(s.ways[i]);
 
     // Float rounding grows with the entries summed: masks of up to 100 entries (the tori) keep
@@ -209,7 +250,7 @@ void OsdCase::prepare() {
     for (const Way& w : s.ways) {
         const std::vector<float> last = s.lastOf(w);
         std::ostringstream m;
-        m << s.mesh.name << " level " << s.level << ": OpenSubdiv's " << (w.omp ? "OmpEvaluator" : "CpuEvaluator")
+        m << s.mesh.name << " level " << s.level << ": OpenSubdiv's " << evaluatorName(w.evaluator) << " evaluation"
           << " on the " << (w.factorized ? "factorized" : "per-level") << " table, " << w.width << " floats, ";
         if (!w.factorized && last != reference)
             throw std::runtime_error(m.str() + "differs from its per-level 3-float CPU evaluation");
@@ -244,7 +285,7 @@ OsdFigures OsdCase::measure(int reps) {
     f.tableBytes = tableBytes(*s.perLevel);
     f.tableBytesFactorized = tableBytes(*s.factorized);
     for (Way& w : s.ways)
-        f.evaluations.push_back({w.factorized ? "factorized" : "per_level", w.omp ? "omp" : "cpu", w.width,
+        f.evaluations.push_back({w.factorized ? "factorized" : "per_level", evaluatorName(w.evaluator), w.width,
                                  timeMs(reps, [&] { s.eval(w); })});
     f.memory = s.memory;
     return f;

@@ -64,17 +64,20 @@ def case_label(c):
     return f"{c['mesh']} | {c['scheme']} | {c['level']}"
 
 
-def osd_best(osd, evaluator=None, width=None):
+SERIAL = ("cpu", "far")  # Osd::CpuEvaluator, Far::StencilTable::UpdateValues
+
+
+def osd_best(osd, evaluators=None, width=None):
     """OpenSubdiv's fastest evaluation among those that match, as (evaluation, median ms)."""
     ways = [e for e in osd["evaluations"]
-            if (evaluator is None or e["evaluator"] == evaluator) and (width is None or e["width"] == width)]
+            if (evaluators is None or e["evaluator"] in evaluators) and (width is None or e["width"] == width)]
     best = min(ways, key=lambda e: e["ms"]["median"])
     return best, best["ms"]["median"]
 
 
 def way_name(e):
     table = "per-level" if e["table"] == "per_level" else "factorized"
-    evaluator = "CpuEvaluator" if e["evaluator"] == "cpu" else "OmpEvaluator"
+    evaluator = {"cpu": "CpuEvaluator", "omp": "OmpEvaluator", "far": "Far UpdateValues"}[e["evaluator"]]
     return f"{evaluator}, {table}, {e['width']}f"
 
 
@@ -83,7 +86,7 @@ def gbps(bytes_moved, ms):
 
 
 def serial_table(r):
-    rows = ["| mesh | scheme | L | vertices | quadtri 3f ms | quadtri 4f ms | OSD best 4f ms (table) | OSD best 3f ms (table)"
+    rows = ["| mesh | scheme | L | vertices | quadtri 3f ms | quadtri 4f ms | OSD best serial 4f ms | OSD best serial 3f ms"
             " | OSD 4f / quadtri 3f | OSD 4f / quadtri 4f | OSD 3f / quadtri 3f | quadtri 3f / memcpy 1t (working set, 256 MiB) |",
             "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for c in r["cases"]:
@@ -91,10 +94,10 @@ def serial_table(r):
         rate = gbps(q["compulsory_bytes"], q["eval_serial_ms"]["median"])
         share = (f"{pct(rate / c['memcpy_working_set']['gbps_1t'])}, {pct(rate / r['memcpy']['gbps_1t'])}")
         if o:
-            b4, m4 = osd_best(o, "cpu", 4)
-            b3, m3 = osd_best(o, "cpu", 3)
-            osd_cols = (f"{timing(b4['ms'])}, {b4['table'].replace('_', '-')} | {timing(b3['ms'])}, "
-                        f"{b3['table'].replace('_', '-')} | {ratio(m4, q['eval_serial_ms']['median'])} | "
+            b4, m4 = osd_best(o, SERIAL, 4)
+            b3, m3 = osd_best(o, SERIAL, 3)
+            osd_cols = (f"{timing(b4['ms'])}, {way_name(b4)} | {timing(b3['ms'])}, {way_name(b3)} | "
+                        f"{ratio(m4, q['eval_serial_ms']['median'])} | "
                         f"{ratio(m4, q['eval_serial_4f_ms']['median'])} | {ratio(m3, q['eval_serial_ms']['median'])}")
         else:
             osd_cols = "– | – | – | – | –"
@@ -205,17 +208,18 @@ def summary(r):
     def q(c, key):
         return c["quadtri"][key]["median"]
 
-    serial = span([osd_best(c["osd"], "cpu")[1] / q(c, "eval_serial_ms") for c in deep])
-    serial4 = span([osd_best(c["osd"], "cpu", 4)[1] / q(c, "eval_serial_4f_ms") for c in deep])
-    serial3 = span([osd_best(c["osd"], "cpu", 3)[1] / q(c, "eval_serial_ms") for c in deep])
+    serial = span([osd_best(c["osd"], SERIAL)[1] / q(c, "eval_serial_ms") for c in deep])
+    serial4 = span([osd_best(c["osd"], SERIAL, 4)[1] / q(c, "eval_serial_4f_ms") for c in deep])
+    serial3 = span([osd_best(c["osd"], SERIAL, 3)[1] / q(c, "eval_serial_ms") for c in deep])
+    serial_ways = sorted({way_name(osd_best(c["osd"], SERIAL)[0]) for c in deep})
     threaded = span([osd_best(c["osd"])[1] / q(c, "eval_threaded_ms") for c in deep])
     threaded4 = span([osd_best(c["osd"])[1] / q(c, "eval_threaded_4f_ms") for c in deep])
     build1 = span([min(c["osd"]["build_per_level_ms"]["median"], c["osd"]["build_factorized_ms"]["median"])
                    / q(c, "build_1t_ms") for c in deep])
     build = span([min(c["osd"]["build_per_level_ms"]["median"], c["osd"]["build_factorized_ms"]["median"])
                   / q(c, "build_ms") for c in deep])
-    pad = span([osd_best(c["osd"], "cpu", 3)[1] / osd_best(c["osd"], "cpu", 4)[1] for c in deep])
-    omp = span([osd_best(c["osd"], "omp", w)[1] / osd_best(c["osd"], "cpu", w)[1] for c in deep for w in (3, 4)])
+    pad = span([osd_best(c["osd"], ["cpu"], 3)[1] / osd_best(c["osd"], ["cpu"], 4)[1] for c in deep])
+    omp = span([osd_best(c["osd"], ["omp"], w)[1] / osd_best(c["osd"], ["cpu"], w)[1] for c in deep for w in (3, 4)])
     bandwidth = span([gbps(c["quadtri"]["compulsory_bytes"], q(c, "eval_threaded_ms")) / r["memcpy"]["gbps_all"]
                       for c in deep])
     bandwidth1 = span([gbps(c["quadtri"]["compulsory_bytes"], q(c, "eval_serial_ms")) / r["memcpy"]["gbps_1t"]
@@ -223,9 +227,9 @@ def summary(r):
     osd_best_ways = sorted({way_name(osd_best(c["osd"])[0]) for c in deep})
     return [
         f"Ratios at {where} (OpenSubdiv / quadtri, medians):",
-        f"- Evaluation, serial: {serial}x OpenSubdiv's best `CpuEvaluator` way (quadtri 3 floats); like width, both"
-        f" padded to 4 floats: {serial4}x; both at 3 floats: {serial3}x. Padding makes OpenSubdiv's serial evaluation"
-        f" {pad}x faster (its SIMD path). quadtri's serial evaluation moves its compulsory bytes at {bandwidth1} of"
+        f"- Evaluation, serial: {serial}x OpenSubdiv's best serial way ({'; '.join(serial_ways)}; quadtri 3 floats);"
+        f" like width, both padded to 4 floats: {serial4}x; both at 3 floats: {serial3}x. Padding makes its"
+        f" `CpuEvaluator` {pad}x faster (its SIMD path). quadtri's serial evaluation moves its compulsory bytes at {bandwidth1} of"
         f" the 1-thread 256 MiB memcpy bandwidth.",
         f"- Evaluation, {n} threads: `TbbEvaluator` {threaded}x OpenSubdiv's best way on any evaluator"
         f" ({'; '.join(osd_best_ways)}); at 4 floats {threaded4}x. Its `OmpEvaluator` (no SIMD path) takes {omp}x"
@@ -281,8 +285,9 @@ def section(r, note):
 
 def case_tables(r):
     vulkan = r.get("vulkan_device")
-    lines = ["", "Evaluation on one thread (quadtri `CpuEvaluator`; OpenSubdiv `CpuEvaluator`, the faster of its"
-              " per-level and factorized tables at each width; 3f / 4f: floats a vertex; last column: quadtri's"
+    lines = ["", "Evaluation on one thread (quadtri `CpuEvaluator`; OpenSubdiv's fastest serial way at each width,"
+              " named: `Osd::CpuEvaluator` or `Far::StencilTable::UpdateValues` on its per-level or factorized table;"
+              " 3f / 4f: floats a vertex; last column: quadtri's"
               " compulsory bytes per second over 1-thread memcpy of a copy the size of the working set, and of"
               " 256 MiB):", ""]
     lines += serial_table(r)
