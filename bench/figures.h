@@ -77,6 +77,7 @@ struct OsdLimitFigures {
     std::size_t tableBytes = 0;  // Far::LimitStencilTable: sizes, offsets, indices, three weight arrays
     Timing evalCpuMs;            // Osd::CpuEvaluator::EvalStencils with du, dv + the normal loop
     Timing evalOmpMs;            // Osd::OmpEvaluator, the same
+    Timing evalFarMs;            // Far's UpdateValues + UpdateDerivs compiled into the bench, the same normals
     MemoryFigures memory;
 };
 

@@ -9,7 +9,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <cstddef>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -17,6 +16,7 @@
 
 #include "bench/compare.h"
 #include "bench/osd_topology.h"
+#include "bench/osd_vertex_view.h"
 #include "bench/peak_memory.h"
 #include "bench/timing.h"
 
@@ -48,24 +48,6 @@ struct Way {
     Evaluator evaluator;
     int width;
     std::vector<float> buffer;
-};
-
-// `Width`-float vertices over a float array, as UpdateValues indexes them: Clear and
-// AddWithWeight sum in the order of every other path, so the results are bitwise theirs.
-template <int Width, class Float>
-struct VertexView {
-    Float* data;
-    struct Vertex {
-        Float* p;
-        void Clear() {
-            for (int c = 0; c < Width; ++c) p[c] = 0.0f;
-        }
-        template <class Source>
-        void AddWithWeight(const Source& src, float weight) {
-            for (int c = 0; c < Width; ++c) p[c] += weight * src.p[c];
-        }
-    };
-    Vertex operator[](int i) const { return {data + std::ptrdiff_t(i) * Width}; }
 };
 
 // xyz of each `width`-float vertex of `values` from vertex `first` on.

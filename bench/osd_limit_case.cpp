@@ -16,6 +16,7 @@
 
 #include "bench/compare.h"
 #include "bench/osd_topology.h"
+#include "bench/osd_vertex_view.h"
 #include "bench/peak_memory.h"
 #include "bench/timing.h"
 
@@ -80,6 +81,21 @@ struct OsdLimitCase::State {
                                 tb.GetSizes().data(), tb.GetOffsets().data(), tb.GetControlIndices().data(),
                                 tb.GetWeights().data(), tb.GetDuWeights().data(), tb.GetDvWeights().data(), 0,
                                 tb.GetNumStencils());
+        normalize();
+    }
+
+    // Far's templates, compiled into the bench over 3-float vertices: one pass over the table
+    // for the positions, one for each derivative.
+    void evalFar() {
+        const VertexView<3, const float> control{mesh.positions.data()};
+        VertexView<3, float> p{position.data()}, u{du.data()}, v{dv.data()};
+        table->UpdateValues(control, p);
+        table->UpdateDerivs(control, u, v);
+        normalize();
+    }
+
+    // normal = normalize(du x dv) per point.
+    void normalize() {
         const std::size_t n = position.size() / 3;
         for (std::size_t i = 0; i < n; ++i) {
             const float* a = &du[3 * i];
@@ -114,7 +130,12 @@ void OsdLimitCase::prepare() {
     const std::size_t n = std::size_t(st.table->GetNumStencils());
     st.position.assign(3 * n, 0.0f);
     st.du = st.dv = st.normal = st.position;
+    st.evalFar();
+    const std::vector<float> farPosition = st.position, farNormal = st.normal;
     st.eval<Osd::CpuEvaluator>();
+    if (farPosition != st.position || farNormal != st.normal)
+        throw std::runtime_error(st.mesh.name + " level " + std::to_string(st.level) +
+                                 ": Far's UpdateValues and UpdateDerivs differ from Osd::CpuEvaluator");
     const LimitTable& t = *st.table;
     st.memory.tableBytes = t.GetSizes().size() * sizeof(int) + t.GetOffsets().size() * sizeof(int) +
                            t.GetControlIndices().size() * sizeof(int) +
@@ -164,6 +185,7 @@ OsdLimitFigures OsdLimitCase::measure(int reps) {
     OsdLimitFigures f;
     f.evalCpuMs = timeMs(reps, [&st] { st.eval<Osd::CpuEvaluator>(); });
     f.evalOmpMs = timeMs(reps, [&st] { st.eval<Osd::OmpEvaluator>(); });
+    f.evalFarMs = timeMs(reps, [&st] { st.evalFar(); });
     f.tableBytes = st.memory.tableBytes;
     f.memory = st.memory;
     return f;

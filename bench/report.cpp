@@ -101,7 +101,8 @@ void writeLimitCaseJson(std::ostream& f, const LimitCaseResult& c) {
     }
     const OsdLimitFigures& o = *c.osd;
     f << "{\"table_bytes\": " << o.tableBytes << ", \"eval_cpu_ms\": " << json(o.evalCpuMs)
-      << ", \"eval_omp_ms\": " << json(o.evalOmpMs) << ",\n       \"memory\": " << json(o.memory) << "}}";
+      << ", \"eval_omp_ms\": " << json(o.evalOmpMs) << ", \"eval_far_ms\": " << json(o.evalFarMs)
+      << ",\n       \"memory\": " << json(o.memory) << "}}";
 }
 
 double bestSerial(const LimitFigures& q) {
@@ -117,9 +118,11 @@ void printLimitMarkdown(std::ostream& out, const std::vector<LimitCaseResult>& c
     if (cases.empty()) return;
     out << "\nPer-frame limit positions + unit normals of the last level's vertices (qt: factorized limit table /"
            " per-level tables then the limit table over the last level; OSD: Far::LimitStencilTable with du, dv"
-           " through Osd::CpuEvaluator / OmpEvaluator, normals in a loop after; 3 floats):\n\n"
+           " through Osd::CpuEvaluator / OmpEvaluator / Far's UpdateValues + UpdateDerivs, normals in a loop after;"
+           " 3 floats):\n\n"
         << "| mesh | scheme | L | points | qt MiB | OSD MiB | qt serial ms (fact. / chain) | qt TBB ms (fact. / chain)"
-           " | OSD CPU / OMP ms | OSD CPU / qt serial | OSD best / qt TBB | mesh normals serial / TBB ms | qt Vulkan ms |\n"
+           " | OSD CPU / OMP / Far ms | OSD serial / qt serial | OSD best / qt TBB | mesh normals serial / TBB ms"
+           " | qt Vulkan ms |\n"
         << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const LimitCaseResult& c : cases) {
         const LimitFigures& q = c.quadtri;
@@ -128,9 +131,10 @@ void printLimitMarkdown(std::ostream& out, const std::vector<LimitCaseResult>& c
             << ms(q.levelsThenLimitSerialMs.median) << " | " << ms(q.limitThreadedMs) << " / "
             << ms(q.levelsThenLimitThreadedMs.median) << " | ";
         if (c.osd) {
-            const double osdBestMs = std::min(c.osd->evalCpuMs.median, c.osd->evalOmpMs.median);
-            out << ms(c.osd->evalCpuMs.median) << " / " << ms(c.osd->evalOmpMs.median) << " | "
-                << ratio(c.osd->evalCpuMs.median, bestSerial(q)) << " | " << ratio(osdBestMs, bestThreaded(q));
+            const OsdLimitFigures& o = *c.osd;
+            const double serialMs = std::min(o.evalCpuMs.median, o.evalFarMs.median);
+            out << ms(o.evalCpuMs.median) << " / " << ms(o.evalOmpMs.median) << " / " << ms(o.evalFarMs.median) << " | "
+                << ratio(serialMs, bestSerial(q)) << " | " << ratio(std::min(serialMs, o.evalOmpMs.median), bestThreaded(q));
         } else {
             out << "– | – | –";
         }
