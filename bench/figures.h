@@ -1,34 +1,60 @@
-// What the bench measures per case, and for the whole run; written out by report.cpp.
+// What the bench measures per case, and for the whole run; written out by report.cpp (the JSON
+// that bench/performance_section.py turns into README's Performance section).
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "bench/timing.h"
+
 namespace quadtri::bench {
 
+// Memory of one side of a case: the bytes its tables and vertex buffers hold by count, and the
+// most memory resident above what was resident when its untimed first run (build, buffers, one
+// evaluation each way) began, read from Linux's peak resident set (bench/peak_memory.h; absent
+// where the kernel cannot reset that peak).
+struct MemoryFigures {
+    std::size_t tableBytes = 0;
+    std::size_t bufferBytes = 0;
+    std::optional<std::size_t> peakResidentBytes;
+};
+
 struct QuadtriFigures {
-    double buildMs = 0;                     // Refiner construction + refineUniform(level)
-    std::size_t tableBytes = 0;             // sum of the per-level tables' bytes()
-    double evalSerialMs = 0;                // CpuEvaluator, level by level
-    std::optional<double> evalThreadedMs;   // TbbEvaluator, level by level
-    std::optional<double> evalVulkanMs;     // VulkanEvaluator over every level, submit to fence (no device: absent)
-    std::optional<double> uploadVulkanMs;   // the per-level tables and the control positions
-    // Table arrays read + distinct source vertices read + output vertices written, all levels.
+    Timing build1Ms;                      // Refiner construction + refineUniform(level), oneTBB limited to 1 thread
+    Timing buildMs;                       // the same on all threads
+    std::size_t tableBytes = 0;           // sum of the per-level tables' bytes()
+    Timing evalSerialMs;                  // CpuEvaluator, level by level, 3 floats a vertex
+    Timing evalThreadedMs;                // TbbEvaluator, the same, all threads
+    Timing evalSerial4Ms;                 // the same two with positions padded to 4 floats
+    Timing evalThreaded4Ms;
+    std::optional<Timing> evalVulkanMs;   // VulkanEvaluator over every level, submit to fence (no device: absent)
+    std::optional<Timing> uploadVulkanMs; // the per-level tables and the control positions
+    // Table arrays read + distinct source vertices read + output vertices written, all levels,
+    // 12 bytes a vertex (16 for compulsoryBytes4).
     double compulsoryBytes = 0;
+    double compulsoryBytes4 = 0;
+    MemoryFigures memory;
+};
+
+// One way OpenSubdiv evaluates the case's last level.
+struct OsdEvaluation {
+    std::string table;      // "per_level" (level by level) or "factorized" (control vertices to the last level)
+    // "cpu" (Osd::CpuEvaluator, serial), "omp" (Osd::OmpEvaluator, all threads) or "far"
+    // (Far::StencilTable::UpdateValues, serial, compiled into the bench over a Width-float vertex)
+    std::string evaluator;
+    int width = 3;          // floats a vertex: 3, or 4 (xyz padded, its SIMD path for Osd::CpuEvaluator)
+    Timing ms;
 };
 
 struct OsdFigures {
-    double buildMsPerLevel = 0;      // refiner + RefineUniform + StencilTableFactory (intermediate levels)
-    double buildMsFactorized = 0;    // the same, last level factorized over the control vertices
-    double evalCpuPerLevelMs = 0;    // Osd::CpuEvaluator on the per-level table (one call)
-    double evalCpuFactorizedMs = 0;  // Osd::CpuEvaluator on the factorized table
-    double evalOmpMs = 0;            // Osd::OmpEvaluator on the per-level table, level by level
-    std::size_t tableBytes = 0;      // per-level table: sizes, offsets, indices, weights
+    Timing buildPerLevelMs;    // refiner + RefineUniform + StencilTableFactory (intermediate levels), serial
+    Timing buildFactorizedMs;  // the same, last level factorized over the control vertices
+    std::size_t tableBytes = 0;  // per-level table: sizes, offsets, indices, weights
     std::size_t tableBytesFactorized = 0;
-    double bestEvalMs() const { return std::min({evalCpuPerLevelMs, evalCpuFactorizedMs, evalOmpMs}); }
+    std::vector<OsdEvaluation> evaluations;  // every table x evaluator x width
+    MemoryFigures memory;                    // both tables, the buffers of every evaluation
 };
 
 // Per-frame limit positions and unit normals of the last level's vertices.
@@ -37,24 +63,22 @@ struct OsdFigures {
 struct LimitFigures {
     std::optional<std::size_t> tableBytes;  // the factorized LimitStencilTable
     std::size_t chainTableBytes = 0;        // the per-level tables and the limit table over level N
-    std::optional<double> limitSerialMs;    // CpuEvaluator::EvalLimitStencils, factorized (control -> limit)
-    std::optional<double> limitThreadedMs;  // TbbEvaluator, the same
-    double levelsThenLimitSerialMs = 0;     // per-level tables to level N, then the limit table over level N
-    double levelsThenLimitThreadedMs = 0;
-    double meshNormalsSerialMs = 0;         // EvalMeshNormals of level N (its positions given)
-    double meshNormalsThreadedMs = 0;
-    std::optional<double> limitVulkanMs;    // VulkanLimitEvaluator, factorized, submit to fence
-    double bestSerialMs() const { return std::min(limitSerialMs.value_or(levelsThenLimitSerialMs), levelsThenLimitSerialMs); }
-    double bestThreadedMs() const {
-        return std::min(limitThreadedMs.value_or(levelsThenLimitThreadedMs), levelsThenLimitThreadedMs);
-    }
+    std::optional<Timing> limitSerialMs;    // CpuEvaluator::EvalLimitStencils, factorized (control -> limit)
+    std::optional<Timing> limitThreadedMs;  // TbbEvaluator, the same
+    Timing levelsThenLimitSerialMs;         // per-level tables to level N, then the limit table over level N
+    Timing levelsThenLimitThreadedMs;
+    Timing meshNormalsSerialMs;             // EvalMeshNormals of level N (its positions given)
+    Timing meshNormalsThreadedMs;
+    std::optional<Timing> limitVulkanMs;    // VulkanLimitEvaluator, factorized, submit to fence
+    MemoryFigures memory;
 };
 
 struct OsdLimitFigures {
     std::size_t tableBytes = 0;  // Far::LimitStencilTable: sizes, offsets, indices, three weight arrays
-    double evalCpuMs = 0;        // Osd::CpuEvaluator::EvalStencils with du, dv + the normal loop
-    double evalOmpMs = 0;        // Osd::OmpEvaluator, the same
-    double bestMs() const { return std::min(evalCpuMs, evalOmpMs); }
+    Timing evalCpuMs;            // Osd::CpuEvaluator::EvalStencils with du, dv + the normal loop
+    Timing evalOmpMs;            // Osd::OmpEvaluator, the same
+    Timing evalFarMs;            // Far's UpdateValues + UpdateDerivs compiled into the bench, the same normals
+    MemoryFigures memory;
 };
 
 struct LimitCaseResult {
@@ -66,6 +90,12 @@ struct LimitCaseResult {
     std::optional<OsdLimitFigures> osd;
 };
 
+// memcpy bandwidth in GB/s (bytes read + written), on one thread and on all.
+struct MemcpyFigures {
+    std::size_t bytes = 0;  // bytes copied (the copy touches twice as many)
+    double gbps1 = 0, gbpsAll = 0;
+};
+
 struct CaseResult {
     std::string mesh;
     std::string scheme;
@@ -73,12 +103,19 @@ struct CaseResult {
     int refinedVertices = 0;  // vertices of the last level
     QuadtriFigures quadtri;
     std::optional<OsdFigures> osd;
+    // A copy whose source and destination together are the size of the 3-float evaluation's
+    // compulsory bytes, so that it runs from the same level of the memory hierarchy.
+    MemcpyFigures memcpyWorkingSet;
 };
 
 struct BenchResult {
-    std::size_t memcpyBytes = 0;  // buffer size of the memcpy runs
-    double memcpyGbps1 = 0;
-    double memcpyGbps2 = 0;
+    std::string date;           // UTC, ISO 8601
+    std::string cpu;            // /proc/cpuinfo's model name
+    std::string command;        // the bench's own command line
+    int threads = 0;            // oneTBB's concurrency: the threaded figures' "all threads"
+    std::string vulkanDevice;   // empty: no Vulkan figures
+    int repetitions = 0;        // timed runs per figure, after one warm-up
+    MemcpyFigures memcpyLarge;  // 256 MiB
     std::vector<CaseResult> cases;
     std::vector<LimitCaseResult> limitCases;
 };

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "bench/compare.h"
+#include "bench/peak_memory.h"
 #include "bench/timing.h"
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/tbb_evaluator.h>
@@ -60,6 +61,7 @@ void LimitCase::meshNormals(bool threaded, std::vector<float>& normal) {
 }
 
 void LimitCase::prepare() {
+    const PeakMemory peak;
     TopologyDescriptor desc;
     desc.numVertices = mesh_.numVertices;
     desc.numFaces = mesh_.numFaces();
@@ -81,6 +83,11 @@ void LimitCase::prepare() {
     const std::size_t n = 3 * std::size_t(limitOverLevel_.numStencils());
     position_.assign(n, 0.0f);
     normal_ = position_;
+    memory_.tableBytes = limitOverLevel_.bytes() + limit_.bytes() + meshTable_.bytes();
+    for (int L = 1; L <= level_; ++L) memory_.tableBytes += refiner_->levelStencils(L).bytes();
+    memory_.bufferBytes = 2 * n * sizeof(float);
+    for (const std::vector<float>& level : levels_) memory_.bufferBytes += level.size() * sizeof(float);
+    memory_.peakResidentBytes = peak.peakAboveStart();
     std::vector<float> p(n), q(n);
     if (!factorizedRefused_.empty()) {
         levelsThenLimit(false, position_, normal_);
@@ -104,19 +111,20 @@ void LimitCase::prepare() {
 
 LimitFigures LimitCase::measure(int reps, [[maybe_unused]] VulkanContext* vulkan) {
     LimitFigures f;
+    f.memory = memory_;
     f.chainTableBytes = limitOverLevel_.bytes();
     for (int L = 1; L <= level_; ++L) f.chainTableBytes += refiner_->levelStencils(L).bytes();
     std::vector<float> p(position_.size()), q(position_.size());
     const bool factorized = factorizedRefused_.empty();
     if (factorized) {
         f.tableBytes = limit_.bytes();
-        f.limitSerialMs = medianMs(reps, [&] { limitFactorized(false, p, q); });
-        f.limitThreadedMs = medianMs(reps, [&] { limitFactorized(true, p, q); });
+        f.limitSerialMs = timeMs(reps, [&] { limitFactorized(false, p, q); });
+        f.limitThreadedMs = timeMs(reps, [&] { limitFactorized(true, p, q); });
     }
-    f.levelsThenLimitSerialMs = medianMs(reps, [&] { levelsThenLimit(false, p, q); });
-    f.levelsThenLimitThreadedMs = medianMs(reps, [&] { levelsThenLimit(true, p, q); });
-    f.meshNormalsSerialMs = medianMs(reps, [&] { meshNormals(false, q); });
-    f.meshNormalsThreadedMs = medianMs(reps, [&] { meshNormals(true, q); });
+    f.levelsThenLimitSerialMs = timeMs(reps, [&] { levelsThenLimit(false, p, q); });
+    f.levelsThenLimitThreadedMs = timeMs(reps, [&] { levelsThenLimit(true, p, q); });
+    f.meshNormalsSerialMs = timeMs(reps, [&] { meshNormals(false, q); });
+    f.meshNormalsThreadedMs = timeMs(reps, [&] { meshNormals(true, q); });
 #ifdef QUADTRI_BENCH_VULKAN
     if (vulkan && factorized) {
         const int n = limit_.numStencils();
@@ -135,7 +143,7 @@ LimitFigures LimitCase::measure(int reps, [[maybe_unused]] VulkanContext* vulkan
         expectClose(gpu, position_, 1e-5 * mesh_.boundingBoxDiagonal(), mesh_.name + ": Vulkan limit positions");
         normal.readBack(gpu.data());
         expectClose(gpu, normal_, 1e-3, mesh_.name + ": Vulkan limit normals");
-        f.limitVulkanMs = medianMs(reps, run);
+        f.limitVulkanMs = timeMs(reps, run);
     }
 #endif
     return f;

@@ -55,6 +55,7 @@ private:
     std::vector<std::vector<float>> levels_;  // per level, for the chain (level 0: the control positions)
     std::vector<float> position_, normal_;
     std::string factorizedRefused_;
+    MemoryFigures memory_;  // the refiner, every table and the buffers, after prepare()
 };
 
 }  // namespace quadtri::bench

@@ -1,7 +1,13 @@
-// quadtri-bench: quadtri against OpenSubdiv on generated tori and a high-valence UV sphere: build time, table bytes and
-// evaluation time per case, checked for agreement first, plus memcpy bandwidth for reference.
+// quadtri-bench: quadtri against OpenSubdiv on generated tori and a high-valence UV sphere: build time (one thread and
+// all), table bytes, memory and evaluation time per case, checked for agreement first, plus memcpy bandwidth for
+// reference (256 MiB, and per case a copy the size of the evaluation's working set).
 //   quadtri-bench [--quick] [--limit] [--json FILE] [--mesh NAME]
+#include <tbb/task_arena.h>
+
 #include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <fstream>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -109,7 +115,12 @@ std::string schemeName(const CaseSpec& spec) {
     return qt + (*spec.osd == OsdScheme::Catmark ? "/catmark" : "/loop");
 }
 
-CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, [[maybe_unused]] VulkanContext* vulkan) {
+// Copies per memcpy figure: small buffers copy in tens of microseconds, so more of them than
+// the cases' repetitions (--quick: as many, to stay short under the sanitizers).
+int memcpyReps(int reps) { return reps < 5 ? reps : 11; }
+
+CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, int threads,
+                   [[maybe_unused]] VulkanContext* vulkan) {
     CaseResult result;
     result.mesh = mesh.name;
     result.scheme = schemeName(spec);
@@ -132,6 +143,7 @@ CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, [[ma
         std::cerr << "  agree with OpenSubdiv: " << match.describe() << "\n";
     }
     result.quadtri = qt.measure(reps);
+    result.memcpyWorkingSet = measureMemcpy(std::size_t(result.quadtri.compulsoryBytes / 2), threads, memcpyReps(reps));
 #ifdef QUADTRI_BENCH_VULKAN
     if (vulkan) {
         const VulkanFigures v = measureVulkan(*vulkan, qt.refiner(), mesh.positions, qt.lastLevel(),
@@ -176,11 +188,29 @@ LimitCaseResult runLimitCase(const ControlMesh& mesh, const CaseSpec& spec, int 
     return result;
 }
 
+std::string utcNow() {
+    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return text;
+}
+
+// The first "model name" of /proc/cpuinfo, or "unknown".
+std::string cpuModel() {
+    std::ifstream info("/proc/cpuinfo");
+    for (std::string line; std::getline(info, line);)
+        if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos)
+            return line.substr(line.find(':') + 2);
+    return "unknown";
+}
+
 int usage(const char* message) {
     if (message) std::cerr << "quadtri-bench: " << message << "\n";
     std::cerr << "usage: quadtri-bench [--quick] [--limit] [--json FILE] [--mesh NAME]\n"
                  "  --quick      CI-sized run: 100x100 tori at levels 2-3 (their limit at 2),\n"
-                 "               the 2000-segment spheres at level 1, 3 repetitions, 32 MiB memcpy\n"
+                 "               the 2000-segment spheres at level 1, 3 repetitions\n"
                  "  --limit      only the limit cases (limit positions + normals, mesh normals)\n"
                  "  --json FILE  also write the figures as JSON to FILE\n"
                  "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
@@ -203,16 +233,20 @@ int run(int argc, char** argv) {
     const int reps = quick ? 3 : 5;
 
     BenchResult result;
-    result.memcpyBytes = std::size_t(quick ? 32 : 256) << 20;
-    std::cerr << "memcpy bandwidth (" << (result.memcpyBytes >> 20) << " MiB)...\n";
-    result.memcpyGbps1 = memcpyGbps(result.memcpyBytes, 1, 5);
-    result.memcpyGbps2 = memcpyGbps(result.memcpyBytes, 2, 5);
+    result.date = utcNow();
+    result.cpu = cpuModel();
+    for (int i = 0; i < argc; ++i) result.command += (i ? " " : "") + std::string(i ? argv[i] : "quadtri-bench");
+    result.threads = tbb::this_task_arena::max_concurrency();
+    result.repetitions = reps;
+    std::cerr << "memcpy bandwidth (256 MiB, 1 and " << result.threads << " threads)...\n";
+    result.memcpyLarge = measureMemcpy(std::size_t(256) << 20, result.threads, memcpyReps(reps));
 
 #ifdef QUADTRI_BENCH_VULKAN
     std::unique_ptr<VulkanContext> vulkan;
     try {
         vulkan = std::make_unique<VulkanContext>();
         std::cerr << "Vulkan device: " << vulkan->deviceName() << "\n";
+        result.vulkanDevice = vulkan->deviceName();
     } catch (const VulkanError& e) {
         std::cerr << "no Vulkan timings: " << e.what() << "\n";
     }
@@ -235,7 +269,7 @@ int run(int argc, char** argv) {
         if (!meshes.count(spec.mesh)) meshes.emplace(spec.mesh, makeMesh(spec.mesh));
         const ControlMesh& mesh = meshes.at(spec.mesh);
         std::cerr << "[" << i + 1 << "/" << cases.size() << "] " << mesh.name << " level " << spec.level << "\n";
-        result.cases.push_back(runCase(mesh, spec, reps, device));
+        result.cases.push_back(runCase(mesh, spec, reps, result.threads, device));
     }
 
     std::vector<CaseSpec> limits = limitCaseList(quick);

@@ -6,13 +6,18 @@
 #include <opensubdiv/osd/bufferDescriptor.h>
 #include <opensubdiv/osd/cpuEvaluator.h>
 #include <opensubdiv/osd/ompEvaluator.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "bench/compare.h"
 #include "bench/osd_topology.h"
+#include "bench/osd_vertex_view.h"
+#include "bench/peak_memory.h"
 #include "bench/timing.h"
 
 namespace quadtri::bench {
@@ -27,6 +32,45 @@ using Table = Far::StencilTableReal<float>;
 using TableFactory = Far::StencilTableFactoryReal<float>;
 using TablePtr = std::unique_ptr<const Table>;
 
+namespace {
+
+// OpenSubdiv's CPU ways of applying a table: Osd::CpuEvaluator and Osd::OmpEvaluator (compiled
+// into libosdCPU), and Far::StencilTable::UpdateValues, a template compiled into the bench over
+// the vertex type it is given.
+enum class Evaluator { Cpu, Omp, Far };
+
+const char* evaluatorName(Evaluator e) { return e == Evaluator::Cpu ? "cpu" : e == Evaluator::Omp ? "omp" : "far"; }
+
+// One way of evaluating the case: a table, an evaluator, a width, and the buffer it writes
+// (per-level: the control vertices, then the vertices of levels 1..L; factorized: the last level).
+struct Way {
+    bool factorized;
+    Evaluator evaluator;
+    int width;
+    std::vector<float> buffer;
+};
+
+// xyz of each `width`-float vertex of `values` from vertex `first` on.
+std::vector<float> xyzOf(const std::vector<float>& values, int width, std::size_t first) {
+    std::vector<float> out;
+    for (std::size_t at = first * std::size_t(width); at < values.size(); at += std::size_t(width))
+        out.insert(out.end(), &values[at], &values[at] + 3);
+    return out;
+}
+
+std::vector<float> padded(const std::vector<float>& xyz) {
+    std::vector<float> out(xyz.size() / 3 * 4, 0.0f);
+    for (std::size_t v = 0; v < xyz.size() / 3; ++v) std::memcpy(&out[4 * v], &xyz[3 * v], 3 * sizeof(float));
+    return out;
+}
+
+std::size_t tableBytes(const Table& t) {
+    return t.GetSizes().size() * sizeof(int) + t.GetOffsets().size() * sizeof(Far::Index) +
+           t.GetControlIndices().size() * sizeof(Far::Index) + t.GetWeights().size() * sizeof(float);
+}
+
+}  // namespace
+
 struct OsdCase::State {
     const ControlMesh& mesh;
     OsdScheme scheme;
@@ -34,8 +78,9 @@ struct OsdCase::State {
     int numControl = 0;
     std::vector<int> firstStencil;  // per level L >= 1: first stencil of level L in the per-level table
     TablePtr perLevel, factorized;
-    // perLevelBuffer / ompBuffer: the control vertices, then the vertices of levels 1..L.
-    std::vector<float> perLevelBuffer, ompBuffer, factorizedOut;
+    std::vector<float> control4;    // the control positions padded to 4 floats
+    std::vector<Way> ways;          // ways[0]: per-level, CPU, 3 floats (the reference)
+    MemoryFigures memory;
 
     State(const ControlMesh& m, OsdScheme s, int l) : mesh(m), scheme(s), level(l) {}
 
@@ -55,45 +100,85 @@ struct OsdCase::State {
         return TablePtr(TableFactory::Create(refiner, o));
     }
 
+    int lastCount() const { return firstStencil[level] - firstStencil[level - 1]; }
+
+    Way makeWay(bool factorize, Evaluator evaluator, int width) const {
+        const int vertices = factorize ? lastCount() : numControl + firstStencil.back();
+        Way w{factorize, evaluator, width, std::vector<float>(std::size_t(width) * std::size_t(vertices), 0.0f)};
+        if (!factorize) {
+            const std::vector<float>& control = width == 4 ? control4 : mesh.positions;
+            std::copy(control.begin(), control.end(), w.buffer.begin());
+        }
+        return w;
+    }
+
+    // Stencils [start, end) of `t` from src to dst (descriptors at the range's first source and
+    // destination vertex). Osd::CpuEvaluator's 4- and 8-float SIMD path misreads a range with
+    // start > 0 (CpuEvalStencils advances `sizes` by start, then its kernel indexes sizes, and
+    // writes dst, from start again: past the arrays' end on the last level): it is given arrays
+    // already offset to the range and start = 0, which its generic path reads the same way.
+    // Osd::OmpEvaluator has no such path and reads `offsets` as absolute positions: it gets the
+    // whole arrays and the range. UpdateValues writes destination start + i: it gets the
+    // destination's vertex 0 as the range's first less start.
+    template <Evaluator E>
+    static void evalRange(const Table& t, const float* src, const Osd::BufferDescriptor& srcDesc, float* dst,
+                          const Osd::BufferDescriptor& dstDesc, int start, int end) {
+        const int* sizes = t.GetSizes().data();
+        const int* offsets = t.GetOffsets().data();
+        const int* indices = t.GetControlIndices().data();
+        const float* weights = t.GetWeights().data();
+        if constexpr (E == Evaluator::Cpu) {
+            const int first = offsets[start];
+            Osd::CpuEvaluator::EvalStencils(src, srcDesc, dst, dstDesc, sizes + start, offsets + start, indices + first,
+                                            weights + first, 0, end - start);
+        } else if constexpr (E == Evaluator::Omp) {
+            Osd::OmpEvaluator::EvalStencils(src, srcDesc, dst, dstDesc, sizes, offsets, indices, weights, start, end);
+        } else {
+            auto update = [&](auto width) {
+                constexpr int n = decltype(width)::value;
+                const VertexView<n, const float> from{src + srcDesc.offset};
+                VertexView<n, float> to{dst + dstDesc.offset - std::ptrdiff_t(start) * n};
+                t.UpdateValues(from, to, start, end);
+            };
+            if (srcDesc.length == 4) update(std::integral_constant<int, 4>());
+            else update(std::integral_constant<int, 3>());
+        }
+    }
+
     // Level by level: the stencils of level L index level L-1's vertices from 0, so the source
-    // descriptor starts at level L-1 in the buffer and the destination at level L; a range
-    // [start, end) writes its first stencil at the destination descriptor's offset. Within a level
+    // descriptor starts at level L-1 in the buffer and the destination at level L. Within a level
     // the stencils are independent, so OmpEvaluator may run them in parallel.
-    template <class Evaluator>
-    void evalPerLevel(std::vector<float>& buffer) {
-        const Table& t = *perLevel;
+    template <Evaluator E>
+    void evalPerLevel(Way& w) const {
+        const int n = w.width;
         for (int L = 1; L <= level; ++L) {
             const int start = firstStencil[L - 1], end = firstStencil[L];
             const int srcFirst = L == 1 ? 0 : numControl + firstStencil[L - 2];
-            Evaluator::EvalStencils(buffer.data(), Osd::BufferDescriptor(3 * srcFirst, 3, 3), buffer.data(),
-                                    Osd::BufferDescriptor(3 * (numControl + start), 3, 3), t.GetSizes().data(),
-                                    t.GetOffsets().data(), t.GetControlIndices().data(), t.GetWeights().data(), start,
-                                    end);
+            evalRange<E>(*perLevel, w.buffer.data(), Osd::BufferDescriptor(n * srcFirst, n, n), w.buffer.data(),
+                         Osd::BufferDescriptor(n * (numControl + start), n, n), start, end);
         }
     }
-    void evalCpuPerLevel() { evalPerLevel<Osd::CpuEvaluator>(perLevelBuffer); }
-    void evalOmp() { evalPerLevel<Osd::OmpEvaluator>(ompBuffer); }
 
-    void evalCpuFactorized() {
-        const Table& t = *factorized;
-        Osd::CpuEvaluator::EvalStencils(mesh.positions.data(), Osd::BufferDescriptor(0, 3, 3), factorizedOut.data(),
-                                        Osd::BufferDescriptor(0, 3, 3), t.GetSizes().data(), t.GetOffsets().data(),
-                                        t.GetControlIndices().data(), t.GetWeights().data(), 0, t.GetNumStencils());
+    template <Evaluator E>
+    void evalFactorized(Way& w) const {
+        const float* control = w.width == 4 ? control4.data() : mesh.positions.data();
+        const Osd::BufferDescriptor desc(0, w.width, w.width);
+        evalRange<E>(*factorized, control, desc, w.buffer.data(), desc, 0, factorized->GetNumStencils());
     }
 
-    std::vector<float> lastOf(const std::vector<float>& buffer) const {
-        return std::vector<float>(buffer.begin() + 3 * size_t(numControl + firstStencil[level - 1]), buffer.end());
+    void eval(Way& w) const {
+        switch (w.evaluator) {
+        case Evaluator::Cpu: w.factorized ? evalFactorized<Evaluator::Cpu>(w) : evalPerLevel<Evaluator::Cpu>(w); break;
+        case Evaluator::Omp: w.factorized ? evalFactorized<Evaluator::Omp>(w) : evalPerLevel<Evaluator::Omp>(w); break;
+        case Evaluator::Far: w.factorized ? evalFactorized<Evaluator::Far>(w) : evalPerLevel<Evaluator::Far>(w); break;
+        }
+    }
+
+    // The last level's xyz as `w` wrote it.
+    std::vector<float> lastOf(const Way& w) const {
+        return xyzOf(w.buffer, w.width, w.factorized ? 0 : std::size_t(numControl + firstStencil[level - 1]));
     }
 };
-
-namespace {
-
-std::size_t tableBytes(const Table& t) {
-    return t.GetSizes().size() * sizeof(int) + t.GetOffsets().size() * sizeof(Far::Index) +
-           t.GetControlIndices().size() * sizeof(Far::Index) + t.GetWeights().size() * sizeof(float);
-}
-
-}  // namespace
 
 OsdCase::OsdCase(const ControlMesh& mesh, OsdScheme scheme, int level)
     : s_(std::make_unique<State>(mesh, scheme, level)) {}
@@ -102,51 +187,69 @@ OsdCase::~OsdCase() = default;
 
 void OsdCase::prepare() {
     State& s = *s_;
+    // OpenMP on as many threads as the TbbEvaluator it is compared with.
+    Osd::OmpEvaluator::SetNumThreads(tbb::this_task_arena::max_concurrency());
+    s.ways.clear();
+    s.control4 = padded(s.mesh.positions);
     {
-        std::unique_ptr<Far::TopologyRefiner> refiner = s.refine();
-        s.numControl = refiner->GetLevel(0).GetNumVertices();
-        s.firstStencil.assign(1, 0);
-        for (int L = 1; L <= s.level; ++L)
-            s.firstStencil.push_back(s.firstStencil.back() + refiner->GetLevel(L).GetNumVertices());
-        s.perLevel = s.stencils(*refiner, false);
+        const PeakMemory peak;
+        {
+            std::unique_ptr<Far::TopologyRefiner> refiner = s.refine();
+            s.numControl = refiner->GetLevel(0).GetNumVertices();
+            s.firstStencil.assign(1, 0);
+            for (int L = 1; L <= s.level; ++L)
+                s.firstStencil.push_back(s.firstStencil.back() + refiner->GetLevel(L).GetNumVertices());
+            s.perLevel = s.stencils(*refiner, false);
+        }
+        s.ways.push_back(s.makeWay(false, Evaluator::Cpu, 3));
+        s.eval(s.ways[0]);
+        s.memory.tableBytes = tableBytes(*s.perLevel);
+        s.memory.bufferBytes = s.ways[0].buffer.size() * sizeof(float);
+        s.memory.peakResidentBytes = peak.peakAboveStart();
     }
     s.factorized = s.stencils(*s.refine(), true);
-    const int lastCount = s.firstStencil[s.level] - s.firstStencil[s.level - 1];
-    if (s.perLevel->GetNumStencils() != s.firstStencil.back() || s.factorized->GetNumStencils() != lastCount) {
+    if (s.perLevel->GetNumStencils() != s.firstStencil.back() || s.factorized->GetNumStencils() != s.lastCount()) {
         std::ostringstream m;
         m << s.mesh.name << " level " << s.level << ": OpenSubdiv tables have " << s.perLevel->GetNumStencils()
           << " (per level) and " << s.factorized->GetNumStencils() << " (factorized) stencils, expected "
-          << s.firstStencil.back() << " and " << lastCount;
+          << s.firstStencil.back() << " and " << s.lastCount();
         throw std::runtime_error(m.str());
     }
+    for (bool factorize : {false, true})
+        for (Evaluator evaluator : {Evaluator::Cpu, Evaluator::Omp, Evaluator::Far})
+            for (int width : {3, 4})
+                if (factorize || evaluator != Evaluator::Cpu || width != 3)
+                    s.ways.push_back(s.makeWay(factorize, evaluator, width));
+    for (std::size_t i = 1; i < s.ways.size(); ++i) s.eval(s.ways[i]);
 
-    s.perLevelBuffer.assign(3 * size_t(s.numControl + s.firstStencil.back()), 0.0f);
-    std::copy(s.mesh.positions.begin(), s.mesh.positions.end(), s.perLevelBuffer.begin());
-    s.ompBuffer = s.perLevelBuffer;
-    s.factorizedOut.assign(3 * size_t(lastCount), 0.0f);
-    s.evalCpuPerLevel();
-    s.evalCpuFactorized();
-    s.evalOmp();
-
-    const std::vector<float> reference = lastLevel();
     // Float rounding grows with the entries summed: masks of up to 100 entries (the tori) keep
     // 1e-5 of the diagonal, a pole's factorized masks (thousands of entries) proportionally more.
     int largest = 0;
     for (int i = 0; i < s.factorized->GetNumStencils(); ++i) largest = std::max(largest, s.factorized->GetSizes()[i]);
     const double tolerance = 1e-5 * s.mesh.boundingBoxDiagonal() * std::max(1.0, largest / 100.0);
-    const double dFactorized = maxAbsDifference(reference, s.factorizedOut);
-    const double dOmp = maxAbsDifference(reference, s.lastOf(s.ompBuffer));
-    if (dFactorized > tolerance || dOmp > tolerance) {
+    const std::vector<float> reference = s.lastOf(s.ways[0]);
+    std::vector<float> factorizedReference;
+    for (const Way& w : s.ways) {
+        const std::vector<float> last = s.lastOf(w);
         std::ostringstream m;
-        m << s.mesh.name << " level " << s.level << ": OpenSubdiv evaluations disagree with the per-level CPU one "
-          << "(factorized by " << dFactorized << ", OpenMP by " << dOmp << ")";
-        throw std::runtime_error(m.str());
+        m << s.mesh.name << " level " << s.level << ": OpenSubdiv's " << evaluatorName(w.evaluator) << " evaluation"
+          << " on the " << (w.factorized ? "factorized" : "per-level") << " table, " << w.width << " floats, ";
+        if (!w.factorized && last != reference)
+            throw std::runtime_error(m.str() + "differs from its per-level 3-float CPU evaluation");
+        if (w.factorized && factorizedReference.empty()) {
+            const double d = maxAbsDifference(reference, last);
+            if (d > tolerance)
+                throw std::runtime_error(m.str() + "differs from the per-level one by " + std::to_string(d));
+            factorizedReference = last;
+        }
+        if (w.factorized && last != factorizedReference)
+            throw std::runtime_error(m.str() + "differs from its factorized 3-float CPU evaluation");
     }
 }
 
-std::vector<float> OsdCase::lastLevel() const { return s_->lastOf(s_->perLevelBuffer); }
+std::vector<float> OsdCase::lastLevel() const { return s_->lastOf(s_->ways[0]); }
 
-int OsdCase::refinedVertices() const { return s_->firstStencil[s_->level] - s_->firstStencil[s_->level - 1]; }
+int OsdCase::refinedVertices() const { return s_->lastCount(); }
 
 OsdFigures OsdCase::measure(int reps) {
     State& s = *s_;
@@ -159,13 +262,14 @@ OsdFigures OsdCase::measure(int reps) {
             TablePtr table = s.stencils(*refiner, factorize);
             builds.push_back(watch.elapsedMs());
         }  // refiner and table are destroyed outside the timed span
-        (factorize ? f.buildMsFactorized : f.buildMsPerLevel) = median(builds);
+        (factorize ? f.buildFactorizedMs : f.buildPerLevelMs) = summarize(builds);
     }
     f.tableBytes = tableBytes(*s.perLevel);
     f.tableBytesFactorized = tableBytes(*s.factorized);
-    f.evalCpuPerLevelMs = medianMs(reps, [&s] { s.evalCpuPerLevel(); });
-    f.evalCpuFactorizedMs = medianMs(reps, [&s] { s.evalCpuFactorized(); });
-    f.evalOmpMs = medianMs(reps, [&s] { s.evalOmp(); });
+    for (Way& w : s.ways)
+        f.evaluations.push_back({w.factorized ? "factorized" : "per_level", evaluatorName(w.evaluator), w.width,
+                                 timeMs(reps, [&] { s.eval(w); })});
+    f.memory = s.memory;
     return f;
 }
 

@@ -8,6 +8,7 @@
 #include <opensubdiv/osd/bufferDescriptor.h>
 #include <opensubdiv/osd/cpuEvaluator.h>
 #include <opensubdiv/osd/ompEvaluator.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -15,6 +16,8 @@
 
 #include "bench/compare.h"
 #include "bench/osd_topology.h"
+#include "bench/osd_vertex_view.h"
+#include "bench/peak_memory.h"
 #include "bench/timing.h"
 
 namespace quadtri::bench {
@@ -33,6 +36,7 @@ struct OsdLimitCase::State {
     std::vector<float> s, t;  // the locations, per control face in face order
     std::unique_ptr<const LimitTable> table;
     std::vector<float> position, du, dv, normal;
+    MemoryFigures memory;  // the table's build, the table and the four outputs
 
     State(const ControlMesh& m, OsdScheme sc, int l) : mesh(m), scheme(sc), level(l) {}
 
@@ -77,6 +81,21 @@ struct OsdLimitCase::State {
                                 tb.GetSizes().data(), tb.GetOffsets().data(), tb.GetControlIndices().data(),
                                 tb.GetWeights().data(), tb.GetDuWeights().data(), tb.GetDvWeights().data(), 0,
                                 tb.GetNumStencils());
+        normalize();
+    }
+
+    // Far's templates, compiled into the bench over 3-float vertices: one pass over the table
+    // for the positions, one for each derivative.
+    void evalFar() {
+        const VertexView<3, const float> control{mesh.positions.data()};
+        VertexView<3, float> p{position.data()}, u{du.data()}, v{dv.data()};
+        table->UpdateValues(control, p);
+        table->UpdateDerivs(control, u, v);
+        normalize();
+    }
+
+    // normal = normalize(du x dv) per point.
+    void normalize() {
         const std::size_t n = position.size() / 3;
         for (std::size_t i = 0; i < n; ++i) {
             const float* a = &du[3 * i];
@@ -96,6 +115,9 @@ OsdLimitCase::~OsdLimitCase() = default;
 
 void OsdLimitCase::prepare() {
     State& st = *s_;
+    // OpenMP on as many threads as the TbbEvaluator it is compared with.
+    Osd::OmpEvaluator::SetNumThreads(tbb::this_task_arena::max_concurrency());
+    const PeakMemory peak;
     std::vector<Far::LimitStencilTableFactory::LocationArray> where;
     st.locations(where);
     {
@@ -108,7 +130,18 @@ void OsdLimitCase::prepare() {
     const std::size_t n = std::size_t(st.table->GetNumStencils());
     st.position.assign(3 * n, 0.0f);
     st.du = st.dv = st.normal = st.position;
+    st.evalFar();
+    const std::vector<float> farPosition = st.position, farNormal = st.normal;
     st.eval<Osd::CpuEvaluator>();
+    if (farPosition != st.position || farNormal != st.normal)
+        throw std::runtime_error(st.mesh.name + " level " + std::to_string(st.level) +
+                                 ": Far's UpdateValues and UpdateDerivs differ from Osd::CpuEvaluator");
+    const LimitTable& t = *st.table;
+    st.memory.tableBytes = t.GetSizes().size() * sizeof(int) + t.GetOffsets().size() * sizeof(int) +
+                           t.GetControlIndices().size() * sizeof(int) +
+                           (t.GetWeights().size() + t.GetDuWeights().size() + t.GetDvWeights().size()) * sizeof(float);
+    st.memory.bufferBytes = 4 * st.position.size() * sizeof(float);
+    st.memory.peakResidentBytes = peak.peakAboveStart();  // not the reference below
 
     // The reference: the exact limit of every vertex of the uniformly refined level.
     std::unique_ptr<Far::TopologyRefiner> r = st.refiner();
@@ -150,12 +183,11 @@ int OsdLimitCase::numPoints() const { return s_->table->GetNumStencils(); }
 OsdLimitFigures OsdLimitCase::measure(int reps) {
     State& st = *s_;
     OsdLimitFigures f;
-    f.evalCpuMs = medianMs(reps, [&st] { st.eval<Osd::CpuEvaluator>(); });
-    f.evalOmpMs = medianMs(reps, [&st] { st.eval<Osd::OmpEvaluator>(); });
-    const LimitTable& t = *st.table;
-    f.tableBytes = t.GetSizes().size() * sizeof(int) + t.GetOffsets().size() * sizeof(int) +
-                   t.GetControlIndices().size() * sizeof(int) +
-                   (t.GetWeights().size() + t.GetDuWeights().size() + t.GetDvWeights().size()) * sizeof(float);
+    f.evalCpuMs = timeMs(reps, [&st] { st.eval<Osd::CpuEvaluator>(); });
+    f.evalOmpMs = timeMs(reps, [&st] { st.eval<Osd::OmpEvaluator>(); });
+    f.evalFarMs = timeMs(reps, [&st] { st.evalFar(); });
+    f.tableBytes = st.memory.tableBytes;
+    f.memory = st.memory;
     return f;
 }
 

@@ -1,7 +1,8 @@
 // OpenSubdiv's way to get the limit points and normals of a refined level every frame: a
 // Far::LimitStencilTable with first derivatives at the level's vertices (their ptex locations on
-// the control faces), evaluated by Osd::CpuEvaluator (and Osd::OmpEvaluator) with du and dv, the
-// normals normalize(du x dv) computed in a loop over the results.
+// the control faces), evaluated by Osd::CpuEvaluator (and Osd::OmpEvaluator, and the table's own
+// UpdateValues + UpdateDerivs templates) with du and dv, the normals normalize(du x dv) computed in
+// a loop over the results.
 #pragma once
 
 #include <memory>
@@ -22,7 +23,8 @@ public:
 
     // Builds the table (adaptive patches, isolation 2), evaluates once, and checks the limit
     // points against Far::PrimvarRefiner::Limit of the uniformly refined level as a set
-    // (std::runtime_error if they differ): the locations are the level's vertices.
+    // (std::runtime_error if they differ): the locations are the level's vertices; Far's
+    // templates must give CpuEvaluator's floats bitwise.
     void prepare();
 
     const std::vector<float>& positions() const;  // xyz per point, after prepare()

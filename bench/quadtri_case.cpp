@@ -1,18 +1,20 @@
 #include "bench/quadtri_case.h"
 
+#include <tbb/global_control.h>
+
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
 #include "bench/compare.h"
-#include <quadtri/osd/tbb_evaluator.h>
+#include "bench/peak_memory.h"
 #include "bench/timing.h"
 #include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 
 namespace quadtri::bench {
 
 namespace {
-
-const BufferDescriptor kXyz(0, 3, 3);
 
 // Source vertices a table reads at least once.
 std::size_t distinctSources(const StencilTable& table) {
@@ -24,6 +26,18 @@ std::size_t distinctSources(const StencilTable& table) {
             ++count;
         }
     return count;
+}
+
+std::vector<float> padded(const std::vector<float>& xyz) {
+    std::vector<float> out(xyz.size() / 3 * 4, 0.0f);
+    for (std::size_t v = 0; v < xyz.size() / 3; ++v) std::memcpy(&out[4 * v], &xyz[3 * v], 3 * sizeof(float));
+    return out;
+}
+
+std::size_t bytesOf(const std::vector<std::vector<float>>& levels) {
+    std::size_t bytes = 0;
+    for (const std::vector<float>& level : levels) bytes += level.size() * sizeof(float);
+    return bytes;
 }
 
 }  // namespace
@@ -45,50 +59,73 @@ std::unique_ptr<Refiner> QuadtriCase::build() const {
     return refiner;
 }
 
-void QuadtriCase::evalSerial() {
+template <class Evaluator>
+void QuadtriCase::eval(std::vector<std::vector<float>>& levels, int width) {
+    const BufferDescriptor desc(0, width, width);
     for (int L = 1; L <= level_; ++L)
-        CpuEvaluator::EvalStencils(serial_[L - 1].data(), kXyz, serial_[L].data(), kXyz, refiner_->levelStencils(L));
-}
-
-void QuadtriCase::evalThreaded() {
-    for (int L = 1; L <= level_; ++L)
-        TbbEvaluator::EvalStencils(threaded_[L - 1].data(), kXyz, threaded_[L].data(), kXyz, refiner_->levelStencils(L));
+        Evaluator::EvalStencils(levels[L - 1].data(), desc, levels[L].data(), desc, refiner_->levelStencils(L));
 }
 
 void QuadtriCase::prepare() {
+    const PeakMemory peak;
     refiner_ = build();
     serial_.assign(level_ + 1, {});
     serial_[0] = mesh_.positions;
     for (int L = 1; L <= level_; ++L) serial_[L].assign(3 * size_t(refiner_->levelStencils(L).numStencils()), 0.0f);
-    evalSerial();
+    eval<CpuEvaluator>(serial_, 3);
+    // The case's memory: the tables and one set of 3-float level buffers, as an application
+    // holds them; the bench's other buffers come after.
+    memory_.tableBytes = 0;
+    for (int L = 1; L <= level_; ++L) memory_.tableBytes += refiner_->levelStencils(L).bytes();
+    memory_.bufferBytes = bytesOf(serial_);
+    memory_.peakResidentBytes = peak.peakAboveStart();
+
     threaded_ = serial_;
     for (int L = 1; L <= level_; ++L) std::fill(threaded_[L].begin(), threaded_[L].end(), 0.0f);
-    evalThreaded();
-    const double diff = maxAbsDifference(serial_.back(), threaded_.back());
-    if (diff > 1e-5 * mesh_.boundingBoxDiagonal()) {
-        std::ostringstream s;
-        s << mesh_.name << " level " << level_ << ": TbbEvaluator differs from CpuEvaluator by " << diff;
-        throw std::runtime_error(s.str());
-    }
+    padded_.clear();
+    for (const std::vector<float>& level : threaded_) padded_.push_back(padded(level));
+    std::vector<std::vector<float>> paddedThreaded = padded_;
+    eval<TbbEvaluator>(threaded_, 3);
+    eval<CpuEvaluator>(padded_, 4);
+    eval<TbbEvaluator>(paddedThreaded, 4);
+    // The same arithmetic in the same order: every way gives the same floats.
+    const std::vector<float>& last = serial_.back();
+    const std::string where = mesh_.name + " level " + std::to_string(level_) + ": ";
+    if (std::memcmp(threaded_.back().data(), last.data(), last.size() * sizeof(float)))
+        throw std::runtime_error(where + "TbbEvaluator differs from CpuEvaluator");
+    if (padded_.back() != paddedThreaded.back() || padded_.back() != padded(last))
+        throw std::runtime_error(where + "the evaluation of 4-float positions differs from the 3-float one");
 }
 
 QuadtriFigures QuadtriCase::measure(int reps) {
     QuadtriFigures f;
-    std::vector<double> builds;
-    for (int r = 0; r < reps; ++r) {
-        Stopwatch watch;
-        std::unique_ptr<Refiner> refiner = build();
-        builds.push_back(watch.elapsedMs());
-    }  // each refiner is destroyed outside its timed span
-    f.buildMs = median(builds);
+    auto timeBuilds = [&] {
+        std::vector<double> builds;
+        for (int r = 0; r < reps; ++r) {
+            Stopwatch watch;
+            std::unique_ptr<Refiner> refiner = build();
+            builds.push_back(watch.elapsedMs());
+        }  // each refiner is destroyed outside its timed span
+        return summarize(builds);
+    };
+    {
+        const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+        f.build1Ms = timeBuilds();
+    }
+    f.buildMs = timeBuilds();
 
     for (int L = 1; L <= level_; ++L) {
         const StencilTable& t = refiner_->levelStencils(L);
         f.tableBytes += t.bytes();
-        f.compulsoryBytes += double(t.bytes()) + 12.0 * double(distinctSources(t)) + 12.0 * t.numStencils();
+        const double vertices = double(distinctSources(t)) + double(t.numStencils());
+        f.compulsoryBytes += double(t.bytes()) + 12.0 * vertices;
+        f.compulsoryBytes4 += double(t.bytes()) + 16.0 * vertices;
     }
-    f.evalSerialMs = medianMs(reps, [this] { evalSerial(); });
-    f.evalThreadedMs = medianMs(reps, [this] { evalThreaded(); });
+    f.evalSerialMs = timeMs(reps, [this] { eval<CpuEvaluator>(serial_, 3); });
+    f.evalThreadedMs = timeMs(reps, [this] { eval<TbbEvaluator>(threaded_, 3); });
+    f.evalSerial4Ms = timeMs(reps, [this] { eval<CpuEvaluator>(padded_, 4); });
+    f.evalThreaded4Ms = timeMs(reps, [this] { eval<TbbEvaluator>(padded_, 4); });
+    f.memory = memory_;
     return f;
 }
 

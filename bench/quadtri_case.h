@@ -1,5 +1,6 @@
-// One bench case on quadtri's side: the analyzer build, the per-level tables, and their serial
-// and threaded evaluation level by level into preallocated buffers.
+// One bench case on quadtri's side: the analyzer build (on one thread and on all), the per-level
+// tables, and their serial and threaded evaluation level by level into preallocated buffers, of
+// 3-float positions and of the same positions padded to 4 floats.
 #pragma once
 
 #include <memory>
@@ -17,8 +18,9 @@ public:
     QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level);
     ~QuadtriCase();
 
-    // The untimed first run: builds the refiner, evaluates serially and (when linked) threaded,
-    // and checks that the two evaluations agree (std::runtime_error if not).
+    // The untimed first run: builds the refiner, evaluates serially and threaded at both widths,
+    // and checks that the four evaluations agree bitwise (std::runtime_error if not); the
+    // case's memory is that of the build and the 3-float serial buffers.
     void prepare();
 
     // Last-level positions of the serial evaluation (after prepare()).
@@ -31,15 +33,17 @@ public:
 
 private:
     std::unique_ptr<Refiner> build() const;
-    void evalSerial();
-    void evalThreaded();
+    template <class Evaluator>
+    void eval(std::vector<std::vector<float>>& levels, int width);
 
     const ControlMesh& mesh_;
     Options options_;
     int level_;
     std::unique_ptr<Refiner> refiner_;
     // Per level: level 0 is the control positions; level L >= 1 is written by levelStencils(L).
-    std::vector<std::vector<float>> serial_, threaded_;
+    // padded_: the same at 4 floats a vertex (the fourth 0).
+    std::vector<std::vector<float>> serial_, threaded_, padded_;
+    MemoryFigures memory_;
 };
 
 }  // namespace quadtri::bench

@@ -1,7 +1,9 @@
 #include "bench/report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -15,8 +17,6 @@ std::string number(double v, const char* format = "%.6g") {
     return buf;
 }
 
-std::string json(std::optional<double> v) { return v ? number(*v) : "null"; }
-
 std::string jsonString(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
@@ -26,145 +26,191 @@ std::string jsonString(const std::string& s) {
     return out + "\"";
 }
 
+std::string json(const Timing& t) {
+    return "{\"median\": " + number(t.median) + ", \"min\": " + number(t.min) + ", \"max\": " + number(t.max) + "}";
+}
+std::string json(const std::optional<Timing>& t) { return t ? json(*t) : "null"; }
+std::string json(std::optional<std::size_t> v) { return v ? std::to_string(*v) : "null"; }
+std::string json(const MemoryFigures& m) {
+    return "{\"table_bytes\": " + std::to_string(m.tableBytes) + ", \"buffer_bytes\": " + std::to_string(m.bufferBytes) +
+           ", \"peak_resident_bytes\": " + json(m.peakResidentBytes) + "}";
+}
+std::string json(const MemcpyFigures& m) {
+    return "{\"bytes\": " + std::to_string(m.bytes) + ", \"gbps_1t\": " + number(m.gbps1) +
+           ", \"gbps_all\": " + number(m.gbpsAll) + "}";
+}
+
 // Milliseconds, bytes and ratios with about three significant digits.
 std::string ms(double v) { return number(v, v >= 100 ? "%.0f" : v >= 10 ? "%.1f" : v >= 1 ? "%.2f" : "%.3f"); }
-std::string ms(std::optional<double> v) { return v ? ms(*v) : "–"; }
+std::string ms(const std::optional<Timing>& v) { return v ? ms(v->median) : "–"; }
 std::string mib(std::size_t bytes) { return ms(double(bytes) / (1 << 20)); }
 std::string mib(std::optional<std::size_t> bytes) { return bytes ? mib(*bytes) : "–"; }
-std::string json(std::optional<std::size_t> v) { return v ? std::to_string(*v) : "null"; }
 std::string ratio(double num, double den) { return den > 0 ? number(num / den, "%.2f") : "–"; }
-std::string ratio(double num, std::optional<double> den) { return den ? ratio(num, *den) : "–"; }
 
-void writeLimitJson(std::ostream& f, const std::vector<LimitCaseResult>& cases) {
-    f << ",\n  \"limit_cases\": [";
-    for (size_t i = 0; i < cases.size(); ++i) {
-        const LimitCaseResult& c = cases[i];
-        const LimitFigures& q = c.quadtri;
-        f << (i ? ",\n" : "\n") << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme)
-          << ", \"level\": " << c.level << ", \"points\": " << c.points << ",\n"
-          << "     \"quadtri\": {\"table_bytes\": " << json(q.tableBytes) << ", \"chain_table_bytes\": " << q.chainTableBytes
-          << ", \"limit_serial_ms\": " << json(q.limitSerialMs) << ", \"limit_threaded_ms\": " << json(q.limitThreadedMs)
-          << ", \"levels_then_limit_serial_ms\": " << number(q.levelsThenLimitSerialMs)
-          << ", \"levels_then_limit_threaded_ms\": " << number(q.levelsThenLimitThreadedMs)
-          << ", \"mesh_normals_serial_ms\": " << number(q.meshNormalsSerialMs)
-          << ", \"mesh_normals_threaded_ms\": " << number(q.meshNormalsThreadedMs)
-          << ", \"limit_vulkan_ms\": " << json(q.limitVulkanMs) << "},\n     \"osd\": ";
-        if (!c.osd) {
-            f << "null, \"ratio_serial\": null, \"ratio_threaded\": null}";
-            continue;
-        }
-        const OsdLimitFigures& o = *c.osd;
-        f << "{\"table_bytes\": " << o.tableBytes << ", \"eval_cpu_ms\": " << number(o.evalCpuMs)
-          << ", \"eval_omp_ms\": " << number(o.evalOmpMs) << "}, \"ratio_serial\": "
-          << number(o.evalCpuMs / q.bestSerialMs()) << ", \"ratio_threaded\": " << number(o.bestMs() / q.bestThreadedMs())
-          << "}";
+// OpenSubdiv's fastest evaluation of a case: on its serial evaluator only, or on any.
+double osdBest(const OsdFigures& o, bool serialOnly, std::optional<int> width = std::nullopt) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const OsdEvaluation& e : o.evaluations)
+        if ((!serialOnly || e.evaluator == "cpu") && (!width || e.width == *width)) best = std::min(best, e.ms.median);
+    return best;
+}
+
+void writeCaseJson(std::ostream& f, const CaseResult& c) {
+    const QuadtriFigures& q = c.quadtri;
+    f << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme) << ", \"level\": " << c.level
+      << ", \"refined_vertices\": " << c.refinedVertices << ",\n     \"memcpy_working_set\": " << json(c.memcpyWorkingSet)
+      << ",\n     \"quadtri\": {\"build_1t_ms\": " << json(q.build1Ms) << ", \"build_ms\": " << json(q.buildMs)
+      << ",\n       \"table_bytes\": " << q.tableBytes << ", \"compulsory_bytes\": " << number(q.compulsoryBytes, "%.0f")
+      << ", \"compulsory_bytes_4f\": " << number(q.compulsoryBytes4, "%.0f")
+      << ",\n       \"eval_serial_ms\": " << json(q.evalSerialMs) << ",\n       \"eval_threaded_ms\": "
+      << json(q.evalThreadedMs) << ",\n       \"eval_serial_4f_ms\": " << json(q.evalSerial4Ms)
+      << ",\n       \"eval_threaded_4f_ms\": " << json(q.evalThreaded4Ms) << ",\n       \"eval_vulkan_ms\": "
+      << json(q.evalVulkanMs) << ", \"upload_vulkan_ms\": " << json(q.uploadVulkanMs)
+      << ",\n       \"memory\": " << json(q.memory) << "},\n     \"osd\": ";
+    if (!c.osd) {
+        f << "null}";
+        return;
     }
-    f << "\n  ]";
+    const OsdFigures& o = *c.osd;
+    f << "{\"build_per_level_ms\": " << json(o.buildPerLevelMs) << ", \"build_factorized_ms\": "
+      << json(o.buildFactorizedMs) << ",\n       \"table_bytes\": " << o.tableBytes
+      << ", \"table_bytes_factorized\": " << o.tableBytesFactorized << ", \"evaluations\": [";
+    for (std::size_t i = 0; i < o.evaluations.size(); ++i) {
+        const OsdEvaluation& e = o.evaluations[i];
+        f << (i ? "," : "") << "\n         {\"table\": " << jsonString(e.table) << ", \"evaluator\": "
+          << jsonString(e.evaluator) << ", \"width\": " << e.width << ", \"ms\": " << json(e.ms) << "}";
+    }
+    f << "],\n       \"memory\": " << json(o.memory) << "}}";
+}
+
+void writeLimitCaseJson(std::ostream& f, const LimitCaseResult& c) {
+    const LimitFigures& q = c.quadtri;
+    f << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme) << ", \"level\": " << c.level
+      << ", \"points\": " << c.points << ",\n     \"quadtri\": {\"table_bytes\": " << json(q.tableBytes)
+      << ", \"chain_table_bytes\": " << q.chainTableBytes << ",\n       \"limit_serial_ms\": " << json(q.limitSerialMs)
+      << ",\n       \"limit_threaded_ms\": " << json(q.limitThreadedMs)
+      << ",\n       \"levels_then_limit_serial_ms\": " << json(q.levelsThenLimitSerialMs)
+      << ",\n       \"levels_then_limit_threaded_ms\": " << json(q.levelsThenLimitThreadedMs)
+      << ",\n       \"mesh_normals_serial_ms\": " << json(q.meshNormalsSerialMs)
+      << ",\n       \"mesh_normals_threaded_ms\": " << json(q.meshNormalsThreadedMs)
+      << ",\n       \"limit_vulkan_ms\": " << json(q.limitVulkanMs) << ",\n       \"memory\": " << json(q.memory)
+      << "},\n     \"osd\": ";
+    if (!c.osd) {
+        f << "null}";
+        return;
+    }
+    const OsdLimitFigures& o = *c.osd;
+    f << "{\"table_bytes\": " << o.tableBytes << ", \"eval_cpu_ms\": " << json(o.evalCpuMs)
+      << ", \"eval_omp_ms\": " << json(o.evalOmpMs) << ", \"eval_far_ms\": " << json(o.evalFarMs)
+      << ",\n       \"memory\": " << json(o.memory) << "}}";
+}
+
+double bestSerial(const LimitFigures& q) {
+    return std::min(q.limitSerialMs ? q.limitSerialMs->median : q.levelsThenLimitSerialMs.median,
+                    q.levelsThenLimitSerialMs.median);
+}
+double bestThreaded(const LimitFigures& q) {
+    return std::min(q.limitThreadedMs ? q.limitThreadedMs->median : q.levelsThenLimitThreadedMs.median,
+                    q.levelsThenLimitThreadedMs.median);
 }
 
 void printLimitMarkdown(std::ostream& out, const std::vector<LimitCaseResult>& cases) {
     if (cases.empty()) return;
     out << "\nPer-frame limit positions + unit normals of the last level's vertices (qt: factorized limit table /"
            " per-level tables then the limit table over the last level; OSD: Far::LimitStencilTable with du, dv"
-           " through Osd::CpuEvaluator / OmpEvaluator, normals in a loop after):\n\n"
+           " through Osd::CpuEvaluator / OmpEvaluator / Far's UpdateValues + UpdateDerivs, normals in a loop after;"
+           " 3 floats):\n\n"
         << "| mesh | scheme | L | points | qt MiB | OSD MiB | qt serial ms (fact. / chain) | qt TBB ms (fact. / chain)"
-           " | OSD CPU / OMP ms | OSD CPU / qt serial | OSD best / qt TBB | mesh normals serial / TBB ms | qt Vulkan ms |\n"
+           " | OSD CPU / OMP / Far ms | OSD serial / qt serial | OSD best / qt TBB | mesh normals serial / TBB ms"
+           " | qt Vulkan ms |\n"
         << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const LimitCaseResult& c : cases) {
         const LimitFigures& q = c.quadtri;
         out << "| " << c.mesh << " | " << c.scheme << " | " << c.level << " | " << c.points << " | " << mib(q.tableBytes)
             << " | " << (c.osd ? mib(c.osd->tableBytes) : "–") << " | " << ms(q.limitSerialMs) << " / "
-            << ms(q.levelsThenLimitSerialMs) << " | " << ms(q.limitThreadedMs) << " / " << ms(q.levelsThenLimitThreadedMs)
-            << " | ";
-        if (c.osd)
-            out << ms(c.osd->evalCpuMs) << " / " << ms(c.osd->evalOmpMs) << " | " << ratio(c.osd->evalCpuMs, q.bestSerialMs())
-                << " | " << ratio(c.osd->bestMs(), q.bestThreadedMs());
-        else
+            << ms(q.levelsThenLimitSerialMs.median) << " | " << ms(q.limitThreadedMs) << " / "
+            << ms(q.levelsThenLimitThreadedMs.median) << " | ";
+        if (c.osd) {
+            const OsdLimitFigures& o = *c.osd;
+            const double serialMs = std::min(o.evalCpuMs.median, o.evalFarMs.median);
+            out << ms(o.evalCpuMs.median) << " / " << ms(o.evalOmpMs.median) << " / " << ms(o.evalFarMs.median) << " | "
+                << ratio(serialMs, bestSerial(q)) << " | " << ratio(std::min(serialMs, o.evalOmpMs.median), bestThreaded(q));
+        } else {
             out << "– | – | –";
-        out << " | " << ms(q.meshNormalsSerialMs) << " / " << ms(q.meshNormalsThreadedMs) << " | " << ms(q.limitVulkanMs)
-            << " |\n";
+        }
+        out << " | " << ms(q.meshNormalsSerialMs.median) << " / " << ms(q.meshNormalsThreadedMs.median) << " | "
+            << ms(q.limitVulkanMs) << " |\n";
     }
 }
 
-void printCasesMarkdown(std::ostream& out, const BenchResult& r);
+// One row per case: builds and evaluations side by side, like for like (serial against
+// OpenSubdiv's serial, all threads against its best on any evaluator), and the share of memcpy
+// bandwidth the evaluation reaches.
+void printCasesMarkdown(std::ostream& out, const BenchResult& r) {
+    out << "| mesh | scheme | L | vertices | qt build ms 1t / " << r.threads << "t | OSD build ms (per-level / fact.)"
+        << " | build OSD/qt 1t | qt MiB | OSD MiB (per-level / fact.) | qt eval ms serial / TBB (3f)"
+        << " | OSD best ms serial 4f / 3f / any | eval OSD/qt serial | eval OSD/qt TBB"
+        << " | qt TBB / memcpy (working set) | peak MiB qt / OSD | qt Vulkan eval / upload ms |\n";
+    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const CaseResult& c : r.cases) {
+        const QuadtriFigures& q = c.quadtri;
+        std::string bandwidth = "–";
+        if (q.evalThreadedMs.median > 0 && c.memcpyWorkingSet.gbpsAll > 0)
+            bandwidth = number(100.0 * q.compulsoryBytes / (q.evalThreadedMs.median * 1e6) / c.memcpyWorkingSet.gbpsAll,
+                               "%.0f%%");
+        out << "| " << c.mesh << " | " << c.scheme << " | " << c.level << " | " << c.refinedVertices << " | "
+            << ms(q.build1Ms.median) << " / " << ms(q.buildMs.median) << " | ";
+        if (c.osd) {
+            const OsdFigures& o = *c.osd;
+            out << ms(o.buildPerLevelMs.median) << " / " << ms(o.buildFactorizedMs.median) << " | "
+                << ratio(std::min(o.buildPerLevelMs.median, o.buildFactorizedMs.median), q.build1Ms.median) << " | "
+                << mib(q.tableBytes) << " | " << mib(o.tableBytes) << " / " << mib(o.tableBytesFactorized) << " | "
+                << ms(q.evalSerialMs.median) << " / " << ms(q.evalThreadedMs.median) << " | "
+                << ms(osdBest(o, true, 4)) << " / " << ms(osdBest(o, true, 3)) << " / " << ms(osdBest(o, false)) << " | "
+                << ratio(osdBest(o, true), q.evalSerialMs.median) << " | "
+                << ratio(osdBest(o, false), q.evalThreadedMs.median);
+        } else {
+            out << "– | – | " << mib(q.tableBytes) << " | – | " << ms(q.evalSerialMs.median) << " / "
+                << ms(q.evalThreadedMs.median) << " | – | – | –";
+        }
+        out << " | " << bandwidth << " | " << mib(q.memory.peakResidentBytes) << " / "
+            << (c.osd ? mib(c.osd->memory.peakResidentBytes) : "–") << " | " << ms(q.evalVulkanMs) << " / "
+            << ms(q.uploadVulkanMs) << " |\n";
+    }
+    out << "Bandwidth column: the threaded evaluation's compulsory bytes (all levels' table arrays, distinct source "
+           "vertices and output vertices, 12 bytes each) per second, over the all-thread memcpy bandwidth of a copy "
+           "whose source and destination together are that size.\n";
+}
 
 }  // namespace
 
 void writeJson(const std::string& path, const BenchResult& r) {
     std::ofstream f(path);
     if (!f) throw std::runtime_error("cannot write " + path);
-    f << "{\n  \"memcpy_gbps_1t\": " << number(r.memcpyGbps1) << ",\n  \"memcpy_gbps_2t\": " << number(r.memcpyGbps2)
+    f << "{\n  \"date\": " << jsonString(r.date) << ", \"cpu\": " << jsonString(r.cpu) << ",\n  \"command\": "
+      << jsonString(r.command) << ", \"repetitions\": " << r.repetitions << ", \"threads\": " << r.threads
+      << ", \"vulkan_device\": " << (r.vulkanDevice.empty() ? "null" : jsonString(r.vulkanDevice))
+      << ",\n  \"memcpy\": " << json(r.memcpyLarge)
       << ",\n  \"cases\": [";
-    for (size_t i = 0; i < r.cases.size(); ++i) {
-        const CaseResult& c = r.cases[i];
-        const QuadtriFigures& q = c.quadtri;
-        f << (i ? ",\n" : "\n") << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme)
-          << ", \"level\": " << c.level << ", \"refined_vertices\": " << c.refinedVertices << ",\n"
-          << "     \"quadtri\": {\"build_ms\": " << number(q.buildMs) << ", \"table_bytes\": " << q.tableBytes
-          << ", \"eval_serial_ms\": " << number(q.evalSerialMs) << ", \"eval_threaded_ms\": " << json(q.evalThreadedMs)
-          << ", \"eval_vulkan_ms\": " << json(q.evalVulkanMs) << ", \"upload_vulkan_ms\": " << json(q.uploadVulkanMs)
-          << "},\n     \"osd\": ";
-        if (!c.osd) {
-            f << "{\"build_ms_per_level\": null, \"build_ms_factorized\": null, \"eval_cpu_per_level_ms\": null, "
-                 "\"eval_cpu_factorized_ms\": null, \"eval_omp_ms\": null, \"table_bytes\": null}}";
-            continue;
-        }
-        const OsdFigures& o = *c.osd;
-        f << "{\"build_ms_per_level\": " << number(o.buildMsPerLevel)
-          << ", \"build_ms_factorized\": " << number(o.buildMsFactorized)
-          << ", \"eval_cpu_per_level_ms\": " << number(o.evalCpuPerLevelMs)
-          << ", \"eval_cpu_factorized_ms\": " << number(o.evalCpuFactorizedMs)
-          << ", \"eval_omp_ms\": " << number(o.evalOmpMs) << ", \"table_bytes\": " << o.tableBytes << "}}";
+    for (std::size_t i = 0; i < r.cases.size(); ++i) {
+        f << (i ? ",\n" : "\n");
+        writeCaseJson(f, r.cases[i]);
     }
-    f << "\n  ]";
-    writeLimitJson(f, r.limitCases);
-    f << "\n}\n";
+    f << "\n  ],\n  \"limit_cases\": [";
+    for (std::size_t i = 0; i < r.limitCases.size(); ++i) {
+        f << (i ? ",\n" : "\n");
+        writeLimitCaseJson(f, r.limitCases[i]);
+    }
+    f << "\n  ]\n}\n";
     if (!f) throw std::runtime_error("cannot write " + path);
 }
 
 void printMarkdown(std::ostream& out, const BenchResult& r) {
     if (!r.cases.empty()) printCasesMarkdown(out, r);
-    out << "\nmemcpy (" << (r.memcpyBytes >> 20) << " MiB, bytes read + written): " << number(r.memcpyGbps1, "%.1f")
-        << " GB/s with 1 thread, " << number(r.memcpyGbps2, "%.1f") << " GB/s with 2 threads\n";
+    out << "\nmemcpy (" << (r.memcpyLarge.bytes >> 20) << " MiB, bytes read + written): "
+        << number(r.memcpyLarge.gbps1, "%.1f") << " GB/s with 1 thread, " << number(r.memcpyLarge.gbpsAll, "%.1f")
+        << " GB/s with " << r.threads << "\n";
     printLimitMarkdown(out, r.limitCases);
 }
-
-namespace {
-
-// One row per case with the main figures and the OSD/quadtri ratios.
-void printCasesMarkdown(std::ostream& out, const BenchResult& r) {
-    const char* threaded = "TBB";
-    out << "| mesh | scheme | L | vertices | qt build ms | OSD build ms (per-level / fact.) | build OSD/qt"
-        << " | qt MiB | OSD MiB (per-level / fact.) | bytes qt/OSD | qt serial ms | qt " << threaded << " ms"
-        << " | OSD CPU ms (per-level / fact.) | OSD OMP ms | eval OSD best/qt serial | eval OSD best/qt " << threaded
-        << " | qt " << threaded << " / memcpy-2t | qt Vulkan eval / upload ms |\n";
-    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    for (const CaseResult& c : r.cases) {
-        const QuadtriFigures& q = c.quadtri;
-        std::string bandwidth = "–";
-        if (q.evalThreadedMs && *q.evalThreadedMs > 0 && r.memcpyGbps2 > 0)
-            bandwidth = number(100.0 * q.compulsoryBytes / (*q.evalThreadedMs * 1e6) / r.memcpyGbps2, "%.0f%%");
-        out << "| " << c.mesh << " | " << c.scheme << " | " << c.level << " | " << c.refinedVertices << " | "
-            << ms(q.buildMs) << " | ";
-        if (c.osd) {
-            const OsdFigures& o = *c.osd;
-            out << ms(o.buildMsPerLevel) << " / " << ms(o.buildMsFactorized) << " | " << ratio(o.buildMsPerLevel, q.buildMs)
-                << " | " << mib(q.tableBytes) << " | " << mib(o.tableBytes) << " / " << mib(o.tableBytesFactorized)
-                << " | " << ratio(double(q.tableBytes), double(o.tableBytes)) << " | " << ms(q.evalSerialMs) << " | "
-                << ms(q.evalThreadedMs) << " | " << ms(o.evalCpuPerLevelMs) << " / " << ms(o.evalCpuFactorizedMs)
-                << " | " << ms(o.evalOmpMs) << " | " << ratio(o.bestEvalMs(), q.evalSerialMs) << " | "
-                << ratio(o.bestEvalMs(), q.evalThreadedMs);
-        } else {
-            out << "– | – | " << mib(q.tableBytes) << " | – | – | " << ms(q.evalSerialMs) << " | "
-                << ms(q.evalThreadedMs) << " | – | – | – | –";
-        }
-        out << " | " << bandwidth << " | " << ms(q.evalVulkanMs) << " / " << ms(q.uploadVulkanMs) << " |\n";
-    }
-    out << "Last column: the threaded evaluation's compulsory bytes (all levels' table arrays, distinct source "
-           "vertices and output vertices, 12 bytes each) per second, over the 2-thread memcpy bandwidth; above "
-           "100% where the working set stays in cache.\n";
-}
-
-}  // namespace
 
 }  // namespace quadtri::bench

@@ -1,4 +1,5 @@
-// The bench's outputs: the JSON file (--json) and the markdown table on stdout.
+// The bench's outputs: the JSON file (--json, read by bench/performance_section.py) and the
+// markdown tables on stdout.
 #pragma once
 
 #include <ostream>
@@ -8,11 +9,12 @@
 
 namespace quadtri::bench {
 
-// Writes {"memcpy_gbps_1t", "memcpy_gbps_2t", "cases": [...]} (null where not run); throws
-// std::runtime_error if the file cannot be written.
+// Every figure (null where not run); each time as {"median", "min", "max"} in ms over the
+// repetitions. Throws std::runtime_error if the file cannot be written.
 void writeJson(const std::string& path, const BenchResult& result);
 
-// One row per case with the main figures and the OSD/quadtri ratios, then the memcpy line.
+// One row per case with the main figures and the like-for-like OSD/quadtri ratios, then the
+// memcpy line and the limit cases.
 void printMarkdown(std::ostream& out, const BenchResult& result);
 
 }  // namespace quadtri::bench

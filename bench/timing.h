@@ -1,4 +1,5 @@
-// Wall-clock timing for the bench: a steady_clock stopwatch and the median of repeated runs.
+// Wall-clock timing for the bench: a steady_clock stopwatch and the median, fastest and slowest of
+// repeated runs.
 #pragma once
 
 #include <algorithm>
@@ -18,16 +19,22 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
-inline double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
+// Milliseconds over the repetitions of one figure: the median is the figure, min and max its spread.
+struct Timing {
+    double median = 0, min = 0, max = 0;
+};
+
+inline Timing summarize(std::vector<double> values) {
+    if (values.empty()) return {};
     std::sort(values.begin(), values.end());
     const size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    const double middle = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    return {middle, values.front(), values.back()};
 }
 
-// One untimed warm-up call of f, then the median in ms of `reps` timed calls.
+// One untimed warm-up call of f, then `reps` timed calls.
 template <class F>
-double medianMs(int reps, F&& f) {
+Timing timeMs(int reps, F&& f) {
     f();
     std::vector<double> times;
     for (int r = 0; r < reps; ++r) {
@@ -35,7 +42,7 @@ double medianMs(int reps, F&& f) {
         f();
         times.push_back(watch.elapsedMs());
     }
-    return median(times);
+    return summarize(times);
 }
 
 }  // namespace quadtri::bench

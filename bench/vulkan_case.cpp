@@ -49,12 +49,12 @@ VulkanFigures measureVulkan(VulkanContext& ctx, const Refiner& refiner, const st
         throw std::runtime_error("Vulkan evaluation differs from CpuEvaluator by " + std::to_string(worst));
 
     VulkanFigures f;
-    f.uploadMs = medianMs(reps, [&] {
+    f.uploadMs = timeMs(reps, [&] {
         upload();
         buffer.updateData(control.data(), 0, numControl);
     });
     const std::vector<const VulkanStencilTable*> levels = pointers(tables);
-    f.evalMs = medianMs(reps, [&] { evaluator.EvalLevelsAndWait(buffer, xyz, levels); });
+    f.evalMs = timeMs(reps, [&] { evaluator.EvalLevelsAndWait(buffer, xyz, levels); });
     return f;
 }
 

@@ -4,14 +4,15 @@
 
 #include <vector>
 
+#include "bench/timing.h"
 #include <quadtri/far/refiner.h>
 #include <quadtri/osd/vulkan_context.h>
 
 namespace quadtri::bench {
 
 struct VulkanFigures {
-    double uploadMs = 0;  // VulkanStencilTable of every level + control positions, median
-    double evalMs = 0;    // EvalLevelsAndWait over every level (submit to fence), median
+    Timing uploadMs;  // VulkanStencilTable of every level + control positions
+    Timing evalMs;    // EvalLevelsAndWait over every level (submit to fence)
 };
 
 // Checks the last level against `expected` (the serial CPU result) within `tolerance` first,
