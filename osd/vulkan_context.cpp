@@ -1,9 +1,8 @@
 #include <quadtri/osd/vulkan_context.h>
 
+#include "osd/internal/vulkan_instance.h"
+
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 
 namespace quadtri {
 inline namespace v0 {
@@ -15,48 +14,12 @@ extern const std::size_t stencil_eval_comp_words;
 
 namespace {
 
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 constexpr uint32_t kNumBindings = 6;  // offsets, indices, weightOffsets, weights, src, dst
 constexpr uint32_t kPushConstantBytes = 4 * sizeof(uint32_t);
 
-bool envFlag(const char* name) {
-    const char* v = std::getenv(name);
-    return v && *v && std::strcmp(v, "0") != 0;
-}
-
-bool hasLayer(const char* name) {
-    uint32_t n = 0;
-    if (vkEnumerateInstanceLayerProperties(&n, nullptr) != VK_SUCCESS) return false;
-    std::vector<VkLayerProperties> layers(n);
-    if (vkEnumerateInstanceLayerProperties(&n, layers.data()) != VK_SUCCESS) return false;
-    for (const auto& l : layers)
-        if (std::strcmp(l.layerName, name) == 0) return true;
-    return false;
-}
-
-std::atomic<int>& totalMessages() {
-    static std::atomic<int> count{0};
-    return count;
-}
-
 }  // namespace
 
-int VulkanContext::totalValidationMessageCount() { return totalMessages().load(); }
-
-VKAPI_ATTR VkBool32 VKAPI_CALL VulkanContext::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                        VkDebugUtilsMessageTypeFlagsEXT types,
-                                                        const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-    // Every message is printed; the layer's findings are counted, not the loader's own
-    // (general) messages such as a missing driver.
-    if (types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT)) {
-        static_cast<VulkanContext*>(user)->validationMessages_.fetch_add(1);
-        totalMessages().fetch_add(1);
-    }
-    std::fprintf(stderr, "quadtri: Vulkan validation %s: %s\n",
-                 severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning",
-                 data && data->pMessage ? data->pMessage : "(no message)");
-    return VK_FALSE;
-}
+int VulkanContext::totalValidationMessageCount() { return detail::totalValidationMessages(); }
 
 VulkanContext::VulkanContext() {
     try {
@@ -88,45 +51,10 @@ VulkanContext::VulkanContext(const External& e)
 VulkanContext::~VulkanContext() { destroy(); }
 
 void VulkanContext::createInstance() {
-    auto app = detail::vkStruct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
-    app.pApplicationName = "quadtri";
-    app.pEngineName = "quadtri";
-    app.apiVersion = VK_API_VERSION_1_1;
-
-    const bool validation = envFlag("QUADTRI_VK_VALIDATION") && hasLayer(kValidationLayer);
-    if (envFlag("QUADTRI_VK_VALIDATION") && !validation)
-        std::fprintf(stderr, "quadtri: QUADTRI_VK_VALIDATION is set but %s is not installed\n", kValidationLayer);
-    const char* layers[] = {kValidationLayer};
-    const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
-
-    auto msg = detail::vkStruct<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
-    msg.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    msg.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    msg.pfnUserCallback = &VulkanContext::onMessage;
-    msg.pUserData = this;
-
-    auto info = detail::vkStruct<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
-    info.pApplicationInfo = &app;
-    if (validation) {
-        info.pNext = &msg;  // also covers vkCreateInstance / vkDestroyInstance themselves
-        info.enabledLayerCount = 1;
-        info.ppEnabledLayerNames = layers;
-        info.enabledExtensionCount = 1;
-        info.ppEnabledExtensionNames = extensions;
-    }
-    const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
-    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
-        throw VulkanError("no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); install one, "
-                          "e.g. Debian's mesa-vulkan-drivers for the lavapipe CPU driver", r);
-    vkCheck(r, "vkCreateInstance");
+    const detail::ValidatedInstance created = detail::createValidatedInstance({}, &validationMessages_);
+    instance_ = created.instance;
+    messenger_ = created.messenger;
     ownsInstance_ = true;
-    if (validation) {
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        if (!create) throw VulkanError("vkCreateDebugUtilsMessengerEXT not available");
-        vkCheck(create(instance_, &msg, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
-    }
 }
 
 void VulkanContext::createDevice() {
@@ -243,14 +171,10 @@ void VulkanContext::destroy() noexcept {
         if (ownsDevice_) vkDestroyDevice(device_, nullptr);
     }
     device_ = VK_NULL_HANDLE;
-    if (instance_ && ownsInstance_) {
-        if (messenger_) {
-            auto destroyMessenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-            if (destroyMessenger) destroyMessenger(instance_, messenger_, nullptr);
-            messenger_ = VK_NULL_HANDLE;
-        }
-        vkDestroyInstance(instance_, nullptr);
+    if (ownsInstance_) {
+        detail::ValidatedInstance owned{instance_, messenger_};
+        detail::destroyValidatedInstance(owned);
+        messenger_ = VK_NULL_HANDLE;
     }
     instance_ = VK_NULL_HANDLE;
 }

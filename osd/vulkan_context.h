@@ -79,8 +79,8 @@ public:
     // performance type) it reported so far.
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
     int validationMessageCount() const { return validationMessages_.load(); }
-    // The same summed over every context of the process, destroyed ones included (messages
-    // from vkDestroyDevice / vkDestroyInstance count too).
+    // The same summed over every instance quadtri created in the process, destroyed ones
+    // included (messages from vkDestroyDevice / vkDestroyInstance count too).
     static int totalValidationMessageCount();
 
     // A memory type of the physical device allowed by typeBits with all of `required`.
@@ -129,10 +129,6 @@ private:
     };
     std::vector<CachedPipeline> pipelines_;
     std::mutex pipelinesMutex_;  // guards pipelines_
-
-    static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                   VkDebugUtilsMessageTypeFlagsEXT types,
-                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 };
 
 }  // namespace v0

@@ -1,48 +1,12 @@
 #include "tools/render/gpu_device.h"
 
-#include <cstdio>
+#include "osd/internal/vulkan_instance.h"
+
 #include <cstdlib>
-#include <cstring>
 
 namespace quadtri::render {
 
 namespace {
-
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-
-bool envFlag(const char* name) {
-    const char* v = std::getenv(name);
-    return v && *v && std::strcmp(v, "0") != 0;
-}
-
-bool hasLayer(const char* name) {
-    uint32_t n = 0;
-    if (vkEnumerateInstanceLayerProperties(&n, nullptr) != VK_SUCCESS) return false;
-    std::vector<VkLayerProperties> layers(n);
-    if (vkEnumerateInstanceLayerProperties(&n, layers.data()) != VK_SUCCESS) return false;
-    for (const auto& l : layers)
-        if (std::strcmp(l.layerName, name) == 0) return true;
-    return false;
-}
-
-std::atomic<int>& totalMessages() {
-    static std::atomic<int> count{0};
-    return count;
-}
-
-VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                         VkDebugUtilsMessageTypeFlagsEXT types,
-                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-    // The layer's findings are counted, not the loader's general messages.
-    if (types & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT)) {
-        static_cast<std::atomic<int>*>(user)->fetch_add(1);
-        totalMessages().fetch_add(1);
-    }
-    std::fprintf(stderr, "quadtri: Vulkan validation %s: %s\n",
-                 severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning",
-                 data && data->pMessage ? data->pMessage : "(no message)");
-    return VK_FALSE;
-}
 
 bool hasExtensions(VkPhysicalDevice pd, const std::vector<std::string>& wanted) {
     uint32_t n = 0;
@@ -65,7 +29,7 @@ std::vector<const char*> pointers(const std::vector<std::string>& names) {
 
 }  // namespace
 
-int GpuDevice::totalValidationMessageCount() { return totalMessages().load(); }
+int GpuDevice::totalValidationMessageCount() { return detail::totalValidationMessages(); }
 
 GpuDevice::GpuDevice(const GpuDeviceOptions& options) {
     try {
@@ -85,52 +49,9 @@ GpuDevice::~GpuDevice() { destroy(); }
 std::string GpuDevice::deviceName() const { return context_->deviceName(); }
 
 void GpuDevice::createInstance(const GpuDeviceOptions& options) {
-    auto app = detail::vkStruct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
-    app.pApplicationName = "quadtri";
-    app.pEngineName = "quadtri";
-    app.apiVersion = VK_API_VERSION_1_1;
-
-    const bool validation = envFlag("QUADTRI_VK_VALIDATION") && hasLayer(kValidationLayer);
-    if (envFlag("QUADTRI_VK_VALIDATION") && !validation)
-        std::fprintf(stderr, "quadtri: QUADTRI_VK_VALIDATION is set but %s is not installed\n", kValidationLayer);
-    std::vector<const char*> extensions = pointers(options.instanceExtensions);
-    std::vector<const char*> layers;
-    if (validation) {
-        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        layers.push_back(kValidationLayer);
-    }
-
-    auto msg =
-        detail::vkStruct<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
-    msg.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    msg.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    msg.pfnUserCallback = &onMessage;
-    msg.pUserData = &messages_;
-
-    auto info = detail::vkStruct<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
-    info.pApplicationInfo = &app;
-    if (validation) info.pNext = &msg;  // also covers vkCreateInstance / vkDestroyInstance
-    info.enabledLayerCount = uint32_t(layers.size());
-    info.ppEnabledLayerNames = layers.data();
-    info.enabledExtensionCount = uint32_t(extensions.size());
-    info.ppEnabledExtensionNames = extensions.data();
-    const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
-    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
-        throw VulkanError(
-            "no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); install one, "
-            "e.g. Debian's mesa-vulkan-drivers for the lavapipe CPU driver",
-            r);
-    if (r == VK_ERROR_EXTENSION_NOT_PRESENT)
-        throw VulkanError("the Vulkan driver lacks an instance extension the window needs", r);
-    vkCheck(r, "vkCreateInstance");
-    if (validation) {
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        if (!create) throw VulkanError("vkCreateDebugUtilsMessengerEXT not available");
-        vkCheck(create(instance_, &msg, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
-    }
+    const detail::ValidatedInstance created = detail::createValidatedInstance(pointers(options.instanceExtensions), &messages_);
+    instance_ = created.instance;
+    messenger_ = created.messenger;
 }
 
 void GpuDevice::pickDevice(const GpuDeviceOptions& options) {
@@ -187,15 +108,9 @@ void GpuDevice::destroy() noexcept {
     context_.reset();  // its pipelines and pool go before the device
     if (device_) vkDestroyDevice(device_, nullptr);
     device_ = VK_NULL_HANDLE;
-    if (instance_) {
-        if (messenger_) {
-            auto destroyMessenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-            if (destroyMessenger) destroyMessenger(instance_, messenger_, nullptr);
-            messenger_ = VK_NULL_HANDLE;
-        }
-        vkDestroyInstance(instance_, nullptr);
-    }
+    detail::ValidatedInstance owned{instance_, messenger_};
+    detail::destroyValidatedInstance(owned);
+    messenger_ = VK_NULL_HANDLE;
     instance_ = VK_NULL_HANDLE;
 }
 

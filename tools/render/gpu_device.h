@@ -50,8 +50,9 @@ public:
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
     // Warnings and errors the validation layer reported so far on this device's instance.
     int validationMessageCount() const { return messages_.load(); }
-    // The same summed over every GpuDevice of the process, destroyed ones included (messages
-    // from vkDestroyDevice / vkDestroyInstance count too).
+    // The same summed over every instance quadtri created in the process (GpuDevices and headless
+    // VulkanContexts, destroyed ones included: messages from vkDestroyDevice / vkDestroyInstance
+    // count too).
     static int totalValidationMessageCount();
 
 private:

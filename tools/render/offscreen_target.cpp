@@ -8,15 +8,6 @@ namespace quadtri::render {
 
 using detail::vkStruct;
 
-VkFormat pickDepthFormat(VkPhysicalDevice physicalDevice) {
-    for (VkFormat f : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D16_UNORM}) {
-        VkFormatProperties props;
-        vkGetPhysicalDeviceFormatProperties(physicalDevice, f, &props);
-        if (props.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) return f;
-    }
-    throw VulkanError("the Vulkan device has no depth attachment format");
-}
-
 OffscreenTarget::OffscreenTarget(VulkanContext& ctx, uint32_t width, uint32_t height)
     : ctx_(ctx), width_(width), height_(height), depthFormat_(pickDepthFormat(ctx.physicalDevice())) {
     const VkPhysicalDeviceLimits& limits = ctx_.properties().limits;
@@ -26,9 +17,12 @@ OffscreenTarget::OffscreenTarget(VulkanContext& ctx, uint32_t width, uint32_t he
         throw VulkanError("an image of " + std::to_string(width) + "x" + std::to_string(height) +
                           " pixels: the Vulkan device draws 1 to " + std::to_string(largest) + " per side");
     try {
-        color_ = createAttachment(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                  VK_IMAGE_ASPECT_COLOR_BIT);
-        depth_ = createAttachment(depthFormat_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+        const VkExtent2D extent{width_, height_};
+        color_ = createImageAttachment(ctx_, extent, kColorFormat,
+                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                       VK_IMAGE_ASPECT_COLOR_BIT);
+        depth_ = createImageAttachment(ctx_, extent, depthFormat_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                       VK_IMAGE_ASPECT_DEPTH_BIT);
         createRenderPass();
         const VkImageView views[2] = {color_.view, depth_.view};
         auto fb = vkStruct<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
@@ -49,65 +43,7 @@ OffscreenTarget::OffscreenTarget(VulkanContext& ctx, uint32_t width, uint32_t he
 
 OffscreenTarget::~OffscreenTarget() { destroy(); }
 
-OffscreenTarget::Attachment OffscreenTarget::createAttachment(VkFormat format, VkImageUsageFlags usage,
-                                                              VkImageAspectFlags aspect) {
-    Attachment a;
-    VkDevice device = ctx_.device();
-    auto ii = vkStruct<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
-    ii.imageType = VK_IMAGE_TYPE_2D;
-    ii.format = format;
-    ii.extent = {width_, height_, 1};
-    ii.mipLevels = 1;
-    ii.arrayLayers = 1;
-    ii.samples = VK_SAMPLE_COUNT_1_BIT;
-    ii.tiling = VK_IMAGE_TILING_OPTIMAL;
-    ii.usage = usage;
-    ii.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    try {
-        vkCheck(vkCreateImage(device, &ii, nullptr, &a.image), "vkCreateImage");
-        VkMemoryRequirements req;
-        vkGetImageMemoryRequirements(device, a.image, &req);
-        auto ai = vkStruct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
-        ai.allocationSize = req.size;
-        ai.memoryTypeIndex = ctx_.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        vkCheck(vkAllocateMemory(device, &ai, nullptr, &a.memory), "vkAllocateMemory");
-        vkCheck(vkBindImageMemory(device, a.image, a.memory, 0), "vkBindImageMemory");
-        auto vi = vkStruct<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
-        vi.image = a.image;
-        vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        vi.format = format;
-        vi.subresourceRange = {aspect, 0, 1, 0, 1};
-        vkCheck(vkCreateImageView(device, &vi, nullptr, &a.view), "vkCreateImageView");
-    } catch (...) {
-        if (a.view) vkDestroyImageView(device, a.view, nullptr);
-        if (a.image) vkDestroyImage(device, a.image, nullptr);
-        if (a.memory) vkFreeMemory(device, a.memory, nullptr);
-        throw;
-    }
-    return a;
-}
-
 void OffscreenTarget::createRenderPass() {
-    VkAttachmentDescription attachments[2] = {};
-    attachments[0].format = kColorFormat;
-    attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    attachments[1] = attachments[0];
-    attachments[1].format = depthFormat_;
-    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &colorRef;
-    subpass.pDepthStencilAttachment = &depthRef;
     // Earlier compute writes (the evaluators' outputs) are read by the vertex shader; the colour
     // writes are copied out after the pass.
     VkSubpassDependency deps[2] = {};
@@ -127,14 +63,8 @@ void OffscreenTarget::createRenderPass() {
     deps[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
     deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
     deps[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    auto rp = vkStruct<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
-    rp.attachmentCount = 2;
-    rp.pAttachments = attachments;
-    rp.subpassCount = 1;
-    rp.pSubpasses = &subpass;
-    rp.dependencyCount = 2;
-    rp.pDependencies = deps;
-    vkCheck(vkCreateRenderPass(ctx_.device(), &rp, nullptr, &renderPass_), "vkCreateRenderPass");
+    renderPass_ = createColorDepthRenderPass(ctx_.device(), kColorFormat, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                             depthFormat_, deps, 2);
 }
 
 Image OffscreenTarget::render(const std::array<float, 4>& background,
@@ -174,12 +104,8 @@ void OffscreenTarget::destroy() noexcept {
     readback_.reset();
     if (framebuffer_) vkDestroyFramebuffer(device, framebuffer_, nullptr);
     if (renderPass_) vkDestroyRenderPass(device, renderPass_, nullptr);
-    for (Attachment* a : {&color_, &depth_}) {
-        if (a->view) vkDestroyImageView(device, a->view, nullptr);
-        if (a->image) vkDestroyImage(device, a->image, nullptr);
-        if (a->memory) vkFreeMemory(device, a->memory, nullptr);
-        *a = Attachment{};
-    }
+    destroyImageAttachment(device, color_);
+    destroyImageAttachment(device, depth_);
     framebuffer_ = VK_NULL_HANDLE, renderPass_ = VK_NULL_HANDLE;
 }
 

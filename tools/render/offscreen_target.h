@@ -13,12 +13,10 @@
 #include <quadtri/osd/vulkan_context.h>
 #include <quadtri/osd/vulkan_memory.h>
 
+#include "tools/render/attachment.h"
 #include "tools/render/image.h"
 
 namespace quadtri::render {
-
-// A depth format the device can attach (D32_SFLOAT, else D24 + stencil, else D16).
-VkFormat pickDepthFormat(VkPhysicalDevice physicalDevice);
 
 class OffscreenTarget {
 public:
@@ -41,19 +39,13 @@ public:
                  const std::function<void(VkCommandBuffer)>& beforePass = {});
 
 private:
-    struct Attachment {
-        VkImage image = VK_NULL_HANDLE;
-        VkDeviceMemory memory = VK_NULL_HANDLE;
-        VkImageView view = VK_NULL_HANDLE;
-    };
-    Attachment createAttachment(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect);
     void createRenderPass();
     void destroy() noexcept;
 
     VulkanContext& ctx_;
     uint32_t width_, height_;
     VkFormat depthFormat_;
-    Attachment color_, depth_;
+    ImageAttachment color_, depth_;
     VkRenderPass renderPass_ = VK_NULL_HANDLE;
     VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
     detail::DeviceBuffer readback_;

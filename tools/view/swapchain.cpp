@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "tools/render/offscreen_target.h"
+#include "tools/render/attachment.h"
 
 namespace quadtri::view {
 
@@ -53,26 +53,6 @@ Swapchain::Swapchain(VulkanContext& ctx, VkSurfaceKHR surface) : ctx_(ctx), surf
 Swapchain::~Swapchain() { destroy(); }
 
 void Swapchain::createRenderPass() {
-    VkAttachmentDescription attachments[2]{};
-    attachments[0].format = format_.format;
-    attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[0].finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    attachments[1] = attachments[0];
-    attachments[1].format = depthFormat_;
-    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    const VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &color;
-    subpass.pDepthStencilAttachment = &depth;
     // The acquire semaphore is waited on at colour output: the layout change waits for it too;
     // the depth image is reused each frame.
     VkSubpassDependency dependency{};
@@ -82,14 +62,8 @@ void Swapchain::createRenderPass() {
     dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT;
     dependency.srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     dependency.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    auto info = vkStruct<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
-    info.attachmentCount = 2;
-    info.pAttachments = attachments;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 1;
-    info.pDependencies = &dependency;
-    vkCheck(vkCreateRenderPass(ctx_.device(), &info, nullptr, &renderPass_), "vkCreateRenderPass");
+    renderPass_ = render::createColorDepthRenderPass(ctx_.device(), format_.format, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                                                     depthFormat_, &dependency, 1);
 }
 
 void Swapchain::createSwapchain(VkExtent2D size) {
@@ -126,36 +100,17 @@ void Swapchain::createSwapchain(VkExtent2D size) {
     images_.resize(n);
     vkCheck(vkGetSwapchainImagesKHR(device, swapchain_, &n, images_.data()), "vkGetSwapchainImagesKHR");
 
-    auto di = vkStruct<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
-    di.imageType = VK_IMAGE_TYPE_2D;
-    di.format = depthFormat_;
-    di.extent = {extent_.width, extent_.height, 1};
-    di.mipLevels = di.arrayLayers = 1;
-    di.samples = VK_SAMPLE_COUNT_1_BIT;
-    di.tiling = VK_IMAGE_TILING_OPTIMAL;
-    di.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    vkCheck(vkCreateImage(device, &di, nullptr, &depthImage_), "vkCreateImage");
-    VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(device, depthImage_, &req);
-    auto mi = vkStruct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
-    mi.allocationSize = req.size;
-    mi.memoryTypeIndex = ctx_.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    vkCheck(vkAllocateMemory(device, &mi, nullptr, &depthMemory_), "vkAllocateMemory");
-    vkCheck(vkBindImageMemory(device, depthImage_, depthMemory_, 0), "vkBindImageMemory");
-
+    depth_ = render::createImageAttachment(ctx_, extent_, depthFormat_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                           VK_IMAGE_ASPECT_DEPTH_BIT);
     auto vi = vkStruct<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
     vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    vi.image = depthImage_;
-    vi.format = depthFormat_;
-    vi.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-    vkCheck(vkCreateImageView(device, &vi, nullptr, &depthView_), "vkCreateImageView");
+    vi.format = format_.format;
+    vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     for (VkImage image : images_) {
         vi.image = image;
-        vi.format = format_.format;
-        vi.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
         views_.push_back(VK_NULL_HANDLE);
         vkCheck(vkCreateImageView(device, &vi, nullptr, &views_.back()), "vkCreateImageView");
-        const VkImageView attachments[2] = {views_.back(), depthView_};
+        const VkImageView attachments[2] = {views_.back(), depth_.view};
         auto fb = vkStruct<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
         fb.renderPass = renderPass_;
         fb.attachmentCount = 2;
@@ -181,10 +136,7 @@ void Swapchain::destroySwapchain() noexcept {
     for (VkImageView v : views_) vkDestroyImageView(device, v, nullptr);
     for (VkSemaphore s : renderDone_) vkDestroySemaphore(device, s, nullptr);
     framebuffers_.clear(), views_.clear(), renderDone_.clear(), images_.clear();
-    if (depthView_) vkDestroyImageView(device, depthView_, nullptr);
-    if (depthImage_) vkDestroyImage(device, depthImage_, nullptr);
-    if (depthMemory_) vkFreeMemory(device, depthMemory_, nullptr);
-    depthView_ = VK_NULL_HANDLE, depthImage_ = VK_NULL_HANDLE, depthMemory_ = VK_NULL_HANDLE;
+    render::destroyImageAttachment(device, depth_);
     if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
     swapchain_ = VK_NULL_HANDLE;
     readback_ = detail::DeviceBuffer();

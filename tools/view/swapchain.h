@@ -13,6 +13,7 @@
 #include <quadtri/osd/vulkan_context.h>
 #include <quadtri/osd/vulkan_memory.h>
 
+#include "tools/render/attachment.h"
 #include "tools/render/image.h"
 
 namespace quadtri::view {
@@ -60,9 +61,7 @@ private:
     std::vector<VkImageView> views_;
     std::vector<VkFramebuffer> framebuffers_;
     std::vector<VkSemaphore> renderDone_;  // per image: presentation waits on it
-    VkImage depthImage_ = VK_NULL_HANDLE;
-    VkDeviceMemory depthMemory_ = VK_NULL_HANDLE;
-    VkImageView depthView_ = VK_NULL_HANDLE;
+    render::ImageAttachment depth_;
     VkSemaphore acquired_ = VK_NULL_HANDLE;
     VkFence done_ = VK_NULL_HANDLE;
     VkCommandPool pool_ = VK_NULL_HANDLE;
