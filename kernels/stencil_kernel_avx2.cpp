@@ -8,7 +8,7 @@
 // - stencils taken in runs that share one pooled weight sequence (after a level or two nearly
 //   every stencil is one of a handful of regular masks, in long runs: face points, then edge
 //   points, then vertex points): the run's weights sit in registers, and the loop is unrolled
-//   to the common mask sizes (3, 4, 6, 7, 9), so a run costs one branch.
+//   to the mask sizes of 3 to 12 entries, so a run costs one branch.
 // Width 3 and width 4 do the same float operations on lanes 0-2, so padded positions give the
 // same bits as packed ones. Only names local to this file and the struct layouts are used: an
 // inline function of a shared header instantiated here would carry AVX2 instructions and could
@@ -91,12 +91,17 @@ void evalStencilsSimd(const float* src, int srcStride, float* dst, int dstStride
             ++runEnd;
         const int* idx = indices + first;
         const float* w = weights + weightOffset;
-        switch (n) {  // the sizes of regular masks, unrolled; every case does the same operations
+        switch (n) {  // every size of the schemes' regular and near-regular masks, unrolled
         case 3: evalRun<Element, 3>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
         case 4: evalRun<Element, 4>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 5: evalRun<Element, 5>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
         case 6: evalRun<Element, 6>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
         case 7: evalRun<Element, 7>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 8: evalRun<Element, 8>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
         case 9: evalRun<Element, 9>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 10: evalRun<Element, 10>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 11: evalRun<Element, 11>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 12: evalRun<Element, 12>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
         default: evalRunAnySize<Element>(src, srcStride, dst, dstStride, idx, w, n, i, runEnd); break;
         }
         i = runEnd;
