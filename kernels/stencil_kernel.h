@@ -1,6 +1,8 @@
-// The one stencil loop. Serial, threaded and (mirrored in GLSL) Vulkan evaluators all run it:
-// dst[i] = sum_k w[k] * src[indices[offsets[i]+k]] for k < offsets[i+1] - offsets[i] and
-// i in [start, end), with w = weights + weightOffsets[i] (the weight pool of StencilTable).
+// The stencil loop: dst[i] = sum_k w[k] * src[indices[offsets[i]+k]] for k < offsets[i+1] -
+// offsets[i] and i in [start, end), with w = weights + weightOffsets[i] (the weight pool of
+// StencilTable). The serial and threaded evaluators both call evalStencils (one kernel, so their
+// results are bitwise equal); the Vulkan shader mirrors the portable loops. docs/stencil_kernel.md
+// says what each path costs.
 #pragma once
 
 namespace quadtri {
@@ -50,8 +52,10 @@ inline void evalStencilsGeneric(const float* src, int srcStride, float* dst, int
     }
 }
 
+// The portable loops: one sum per component, entries in order, a multiply and an add each. The
+// reference the fast paths are tested against, and the path for widths other than 3 and 4.
 // src and dst point at element 0 (descriptor offsets already applied).
-inline void evalStencils(const float* src, int srcStride, float* dst, int dstStride, int width,
+inline void evalStencilsPortable(const float* src, int srcStride, float* dst, int dstStride, int width,
                          const StencilArrays& t, int start, int end) {
     switch (width) {
     case 1: evalStencilsFixed<1>(src, srcStride, dst, dstStride, t, start, end); break;
@@ -61,6 +65,22 @@ inline void evalStencils(const float* src, int srcStride, float* dst, int dstStr
     default: evalStencilsGeneric(src, srcStride, dst, dstStride, width, t, start, end); break;
     }
 }
+
+// Stencils [start, end) of any width (kernels/stencil_kernel.cpp). Widths 3 and 4 take the AVX2 +
+// FMA loop (kernels/stencil_kernel_avx2.cpp) where the CPU has it, decided once per process:
+// fused multiply-adds and two partial sums per stencil, so its bits differ from the portable
+// loops' by float rounding, and width 3 and width 4 (padded) give the same bits as each other.
+void evalStencils(const float* src, int srcStride, float* dst, int dstStride, int width, const StencilArrays& t,
+                  int start, int end);
+
+// Whether evalStencils takes the AVX2 + FMA loop for widths 3 and 4 on this CPU.
+bool stencilKernelUsesAvx2();
+
+// The AVX2 + FMA loops of width 3 and 4 (any strides of at least the width).
+void evalStencils3Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
+                       int end);
+void evalStencils4Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
+                       int end);
 
 }  // namespace kernels
 }  // namespace v0

@@ -13,6 +13,7 @@
 #include "far/internal/rules.h"
 #include "far/internal/scheme.h"
 #include "far/internal/weight_pool.h"
+#include "kernels/stencil_kernel.h"
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/tbb_evaluator.h>
 #include "tests/test_support.h"
@@ -337,18 +338,27 @@ TEST(WeightPool, GrowingKeepsEveryOffset) {
 }
 
 // The plain CSR loop that the pooled layout replaces, in float with the kernel's order of
-// operations (one running sum per component, entries in order): evaluators must match it bit
-// for bit.
+// operations, written out here from what kernels/stencil_kernel.h documents: one running sum per
+// component with entries in order (the portable loops), or, where evalStencils takes the AVX2 +
+// FMA loop (widths 3 and 4), a fused multiply-add per entry into two partial sums, the even and
+// the odd entries, added at the end. Evaluators must match it bit for bit.
 std::vector<float> evaluatePlain(const StencilTableD& plain, const std::vector<float>& src, int width) {
+    const bool fused = (width == 3 || width == 4) && kernels::stencilKernelUsesAvx2();
     std::vector<float> out(plain.sizes.size() * std::size_t(width));
     for (std::size_t i = 0; i < plain.sizes.size(); ++i)
         for (int c = 0; c < width; ++c) {
-            float sum = 0.0f;
-            for (int k = plain.offsets[i]; k < plain.offsets[i] + plain.sizes[i]; ++k) {
-                const std::size_t at = std::size_t(k);
-                sum += float(plain.weights[at]) * src[std::size_t(plain.indices[at]) * width + c];
+            float sum = 0.0f, even = 0.0f, odd = 0.0f;
+            for (int k = 0; k < plain.sizes[i]; ++k) {
+                const std::size_t at = std::size_t(plain.offsets[i] + k);
+                const float w = float(plain.weights[at]), s = src[std::size_t(plain.indices[at]) * width + c];
+                if (!fused)
+                    sum += w * s;
+                else if (k % 2 == 0)
+                    even = std::fma(w, s, even);
+                else
+                    odd = std::fma(w, s, odd);
             }
-            out[i * std::size_t(width) + std::size_t(c)] = sum;
+            out[i * std::size_t(width) + std::size_t(c)] = fused ? even + odd : sum;
         }
     return out;
 }

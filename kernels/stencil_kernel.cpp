@@ -1,0 +1,34 @@
+// The stencil kernel's entry point: the portable loops of kernels/stencil_kernel.h, or for 3- and
+// 4-float data the AVX2 + FMA loops where the CPU has both (checked once per process).
+#include "kernels/stencil_kernel.h"
+
+namespace quadtri {
+inline namespace v0 {
+namespace kernels {
+
+bool stencilKernelUsesAvx2() {
+#if defined(QUADTRI_HAVE_AVX2_KERNELS)
+    static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    return available;
+#else
+    return false;
+#endif
+}
+
+void evalStencils(const float* src, int srcStride, float* dst, int dstStride, int width, const StencilArrays& t,
+                  int start, int end) {
+#if defined(QUADTRI_HAVE_AVX2_KERNELS)
+    if ((width == 3 || width == 4) && stencilKernelUsesAvx2()) {
+        if (width == 3)
+            evalStencils3Avx2(src, srcStride, dst, dstStride, t, start, end);
+        else
+            evalStencils4Avx2(src, srcStride, dst, dstStride, t, start, end);
+        return;
+    }
+#endif
+    evalStencilsPortable(src, srcStride, dst, dstStride, width, t, start, end);
+}
+
+}  // namespace kernels
+}  // namespace v0
+}  // namespace quadtri

@@ -1,0 +1,125 @@
+// The stencil loops of width 3 and 4 with AVX2 + FMA code generation (this file alone is compiled
+// with -mavx2 -mfma; kernels/stencil_kernel.cpp calls them only where the CPU has both). They
+// compute what the portable loops of kernels/stencil_kernel.h do, with fewer instructions per
+// entry (docs/stencil_kernel.md has the counts):
+// - an element is one 128-bit register (x, y, z and a zero or the padding's w), the weight
+//   broadcast straight from the pool, one fused multiply-add per entry for all components;
+// - two partial sums (even and odd entries), so consecutive entries do not wait on one another;
+// - stencils taken in runs that share one pooled weight sequence (after a level or two nearly
+//   every stencil is one of a handful of regular masks, in long runs: face points, then edge
+//   points, then vertex points): the run's weights sit in registers, and the loop is unrolled
+//   to the mask sizes of 3 to 12 entries, so a run costs one branch.
+// Width 3 and width 4 do the same float operations on lanes 0-2, so padded positions give the
+// same bits as packed ones. Only names local to this file and the struct layouts are used: an
+// inline function of a shared header instantiated here would carry AVX2 instructions and could
+// be the copy the linker keeps.
+#include <immintrin.h>
+
+#include "kernels/stencil_kernel.h"
+
+namespace quadtri {
+inline namespace v0 {
+namespace kernels {
+namespace {
+
+// x, y, z of an element that is only 4-byte aligned; lane 3 is 0. No byte past z is read.
+struct Xyz {
+    static __m128 load(const float* p) {
+        const __m128 xy = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)));
+        return _mm_insert_ps(xy, _mm_load_ss(p + 2), 0x20);
+    }
+    static void store(float* d, __m128 v) {
+        _mm_storel_epi64(reinterpret_cast<__m128i*>(d), _mm_castps_si128(v));
+        _mm_store_ss(d + 2, _mm_movehl_ps(v, v));
+    }
+};
+
+// Four floats, only 4-byte aligned.
+struct Xyzw {
+    static __m128 load(const float* p) { return _mm_loadu_ps(p); }
+    static void store(float* d, __m128 v) { _mm_storeu_ps(d, v); }
+};
+
+// The weighted sum of one stencil's n entries, w[k] being weight k broadcast to every lane.
+// Inlined with a constant n it unrolls completely.
+template <class Element, class Weight>
+[[gnu::always_inline]] inline __m128 weightedSum(const float* src, long srcStride, const int* idx, Weight w, int n) {
+    __m128 even = _mm_setzero_ps(), odd = _mm_setzero_ps();
+    int k = 0;
+    for (; k + 1 < n; k += 2) {
+        even = _mm_fmadd_ps(w(k), Element::load(src + idx[k] * srcStride), even);
+        odd = _mm_fmadd_ps(w(k + 1), Element::load(src + idx[k + 1] * srcStride), odd);
+    }
+    if (k < n) even = _mm_fmadd_ps(w(k), Element::load(src + idx[k] * srcStride), even);
+    return _mm_add_ps(even, odd);
+}
+
+// Stencils [i, runEnd) of N entries each, consecutive in the index array from idx, all with the
+// pooled weights w: the weights are broadcast into registers once for the whole run.
+template <class Element, int N>
+void evalRun(const float* src, long srcStride, float* dst, long dstStride, const int* idx, const float* w, int i,
+             int runEnd) {
+    __m128 weight[N];
+    for (int k = 0; k < N; ++k) weight[k] = _mm_broadcast_ss(w + k);
+    const auto inRegister = [&](int k) { return weight[k]; };
+    for (; i < runEnd; ++i, idx += N)
+        Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, idx, inRegister, N));
+}
+
+// Any size: the weights broadcast from the pool entry by entry, the same operations as evalRun's.
+template <class Element>
+void evalRunAnySize(const float* src, long srcStride, float* dst, long dstStride, const int* idx, const float* w, int n,
+                    int i, int runEnd) {
+    const auto fromPool = [w](int k) { return _mm_broadcast_ss(w + k); };
+    for (; i < runEnd; ++i, idx += n)
+        Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, idx, fromPool, n));
+}
+
+template <class Element>
+void evalStencilsSimd(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
+                      int end) {
+    // The arrays in locals: the stores through dst could otherwise alias t, and its members would
+    // be read again for every stencil.
+    const int *offsets = t.offsets, *indices = t.indices, *weightOffsets = t.weightOffsets;
+    const float* weights = t.weights;
+    for (int i = start; i < end;) {
+        // A run: consecutive stencils of one size sharing one pooled weight sequence (the pool
+        // stores each distinct sequence once, so equal offsets mean equal weights).
+        const int first = offsets[i], n = offsets[i + 1] - first, weightOffset = weightOffsets[i];
+        int runEnd = i + 1;
+        while (runEnd < end && weightOffsets[runEnd] == weightOffset && offsets[runEnd + 1] - offsets[runEnd] == n)
+            ++runEnd;
+        const int* idx = indices + first;
+        const float* w = weights + weightOffset;
+        switch (n) {  // every size of the schemes' regular and near-regular masks, unrolled
+        case 3: evalRun<Element, 3>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 4: evalRun<Element, 4>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 5: evalRun<Element, 5>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 6: evalRun<Element, 6>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 7: evalRun<Element, 7>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 8: evalRun<Element, 8>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 9: evalRun<Element, 9>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 10: evalRun<Element, 10>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 11: evalRun<Element, 11>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        case 12: evalRun<Element, 12>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+        default: evalRunAnySize<Element>(src, srcStride, dst, dstStride, idx, w, n, i, runEnd); break;
+        }
+        i = runEnd;
+    }
+}
+
+}  // namespace
+
+void evalStencils3Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
+                       int end) {
+    evalStencilsSimd<Xyz>(src, srcStride, dst, dstStride, t, start, end);
+}
+
+void evalStencils4Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
+                       int end) {
+    evalStencilsSimd<Xyzw>(src, srcStride, dst, dstStride, t, start, end);
+}
+
+}  // namespace kernels
+}  // namespace v0
+}  // namespace quadtri
