@@ -70,13 +70,15 @@ void main() {
     const int first = offsets[i];
     const int n = sizes[i];
     int w = weightOffsets[i];
+    float base[LENGTH];
     const uint s0 = n > 0 ? pc.srcOffset + uint(indices[first]) * uint(SRC_STRIDE) : 0u;
+    for (int c = 0; c < LENGTH; ++c) base[c] = n > 0 ? src[s0 + uint(c)] : 0.0;
     for (int k = 0; k < n; ++k, w += 3) {
         const uint s = pc.srcOffset + uint(indices[first + k]) * uint(SRC_STRIDE);
         const float wp = weights[w], wu = weights[w + 1], wv = weights[w + 2];
         for (int c = 0; c < LENGTH; ++c) {
             const float x = src[s + uint(c)];
-            const float d = x - src[s0 + uint(c)];
+            const float d = x - base[c];
             p[c] += wp * x;
             u[c] += wu * d;
             v[c] += wv * d;
