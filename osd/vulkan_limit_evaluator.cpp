@@ -20,9 +20,15 @@ extern const std::size_t mesh_normals_comp_words;
 
 namespace {
 
-constexpr uint32_t kLimitBindings = 12;  // table (5), source, 4 outputs, fallback table (2)
+constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+// table (5: sizes, offsets, the index pool, weight offsets, the weight pool), source, 4 outputs,
+// fallback table (2), then the two pools again as texel buffers (shaders/limit_eval.comp).
+const std::vector<VkDescriptorType> kLimitBindings = {kStorage, kStorage, kStorage, kStorage, kStorage,
+                                                      kStorage, kStorage, kStorage, kStorage, kStorage,
+                                                      kStorage, kStorage, kTexels,  kTexels};
 constexpr uint32_t kLimitPushWords = 7;  // 5 float offsets, start, end
-constexpr uint32_t kNormalBindings = 4;  // table (2), source, destination
+const std::vector<VkDescriptorType> kNormalBindings(4, kStorage);  // table (2), source, destination
 constexpr uint32_t kNormalPushWords = 4;
 
 // Floats needed to hold `count` elements of `d` (0 when count is 0).
@@ -46,7 +52,9 @@ VulkanLimitEvaluator::VulkanLimitEvaluator(VulkanContext& ctx)
                                                     kLimitBindings, kLimitPushWords)),
       normals_(std::make_unique<detail::VulkanKernel>(ctx, shaders::mesh_normals_comp, shaders::mesh_normals_comp_words,
                                                       kNormalBindings, kNormalPushWords)),
-      unused_(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) {}
+      unused_(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+      unusedIndexTexels_(ctx, unused_, VK_FORMAT_R32_SINT), unusedWeightTexels_(ctx, unused_, VK_FORMAT_R32_SFLOAT) {}
 
 VulkanLimitEvaluator::~VulkanLimitEvaluator() = default;
 
@@ -105,7 +113,13 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
         for (int k = 0; k < 2; ++k) infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
     }
     constants.push_back(mask);
-    limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end);
+    const bool poolTexels = table.indexTexels() != VK_NULL_HANDLE;
+    constants.push_back(poolTexels);
+    std::vector<VkBufferView> texels(kLimitBindings.size(), VK_NULL_HANDLE);
+    texels[12] = poolTexels ? table.indexTexels() : unusedIndexTexels_.view();
+    texels[13] = poolTexels ? table.weightTexels() : unusedWeightTexels_.view();
+    limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end,
+                   texels);
 }
 
 void VulkanLimitEvaluator::EvalLimitStencils(VkCommandBuffer cmd, const VulkanBufferRef& src,
