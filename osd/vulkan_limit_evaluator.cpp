@@ -23,10 +23,11 @@ namespace {
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
 // table (5: sizes, offsets, the index pool, weight offsets, the weight pool), source, 4 outputs,
-// fallback table (2), then the two pools again as texel buffers (shaders/limit_eval.comp).
+// fallback table (2), then the two pools and the source again as texel buffers
+// (shaders/limit_eval.comp).
 const std::vector<VkDescriptorType> kLimitBindings = {kStorage, kStorage, kStorage, kStorage, kStorage,
                                                       kStorage, kStorage, kStorage, kStorage, kStorage,
-                                                      kStorage, kStorage, kTexels,  kTexels};
+                                                      kStorage, kStorage, kTexels,  kTexels,  kTexels};
 constexpr uint32_t kLimitPushWords = 7;  // 5 float offsets, start, end
 const std::vector<VkDescriptorType> kNormalBindings(4, kStorage);  // table (2), source, destination
 constexpr uint32_t kNormalPushWords = 4;
@@ -89,7 +90,10 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
         {table.sizes(), 0, VK_WHOLE_SIZE},         {table.offsets(), 0, VK_WHOLE_SIZE},
         {table.indices(), 0, VK_WHOLE_SIZE},       {table.weightOffsets(), 0, VK_WHOLE_SIZE},
         {table.weights(), 0, VK_WHOLE_SIZE},       source.info};
-    std::vector<uint32_t> words{source.floatOffset};
+    // The source's texel view starts at the buffer's byte 0, its storage binding at source.info.
+    const std::size_t texelOffset = src.byteOffset / 4 + std::size_t(srcDesc.offset);
+    const bool sourceTexels = src.texels != VK_NULL_HANDLE && texelOffset <= std::size_t(INT32_MAX);
+    std::vector<uint32_t> words{sourceTexels ? uint32_t(texelOffset) : source.floatOffset};
     std::vector<int32_t> constants{srcDesc.length, srcDesc.stride};
     int32_t mask = 0;
     for (int k = 0; k < 4; ++k) {
@@ -115,9 +119,11 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
     constants.push_back(mask);
     const bool poolTexels = table.indexTexels() != VK_NULL_HANDLE;
     constants.push_back(poolTexels);
+    constants.push_back(sourceTexels);
     std::vector<VkBufferView> texels(kLimitBindings.size(), VK_NULL_HANDLE);
     texels[12] = poolTexels ? table.indexTexels() : unusedIndexTexels_.view();
     texels[13] = poolTexels ? table.weightTexels() : unusedWeightTexels_.view();
+    texels[14] = sourceTexels ? src.texels : unusedWeightTexels_.view();
     limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end,
                    texels);
 }
@@ -155,7 +161,7 @@ void VulkanLimitEvaluator::EvalLimitStencilsAndWait(
     const BufferDescriptor* const descs[4] = {&positionDesc, &duDesc, &dvDesc, &normalDesc};
     try {
         ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-            recordLimit(cmd, true, {src.buffer(), 0}, srcDesc, outputs, descs, table, fallback, start, end);
+            recordLimit(cmd, true, {src.buffer(), 0, src.texels()}, srcDesc, outputs, descs, table, fallback, start, end);
         });
     } catch (...) {
         resetWaited();
