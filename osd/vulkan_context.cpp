@@ -16,7 +16,10 @@ extern const std::size_t stencil_eval_comp_words;
 namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-constexpr uint32_t kNumBindings = 6;  // offsets, indices, weightOffsets, weights, src, dst
+// Storage buffers: offsets, indices, weightOffsets, weights, src, dst; then uniform texel
+// buffers: the index pool, the weight pool, src (shaders/stencil_eval.comp).
+constexpr uint32_t kNumBindings = 9;
+constexpr uint32_t kStorageBindings = 6;
 constexpr uint32_t kPushConstantBytes = 4 * sizeof(uint32_t);
 
 bool envFlag(const char* name) {
@@ -156,7 +159,9 @@ void VulkanContext::createShared() {
 
     VkDescriptorSetLayoutBinding bindings[kNumBindings];
     for (uint32_t b = 0; b < kNumBindings; ++b)
-        bindings[b] = VkDescriptorSetLayoutBinding{b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        bindings[b] = VkDescriptorSetLayoutBinding{
+            b, b < kStorageBindings ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1,
+            VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     auto sl = detail::vkStruct<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
     sl.bindingCount = kNumBindings;
     sl.pBindings = bindings;
@@ -173,13 +178,19 @@ void VulkanContext::createShared() {
 }
 
 VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStride) {
+    return stencilPipeline(length, srcStride, dstStride, false, false);
+}
+
+VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStride, bool poolTexels, bool sourceTexels) {
     const std::lock_guard<std::mutex> lock(pipelinesMutex_);
     for (const auto& p : pipelines_)
-        if (p.length == length && p.srcStride == srcStride && p.dstStride == dstStride) return p.pipeline;
-    const int32_t values[4] = {int32_t(workgroupSize_), length, srcStride, dstStride};
-    VkSpecializationMapEntry entries[4];
-    for (uint32_t i = 0; i < 4; ++i) entries[i] = VkSpecializationMapEntry{i, uint32_t(i * sizeof(int32_t)), sizeof(int32_t)};
-    VkSpecializationInfo spec{4, entries, sizeof(values), values};
+        if (p.length == length && p.srcStride == srcStride && p.dstStride == dstStride && p.poolTexels == poolTexels &&
+            p.sourceTexels == sourceTexels)
+            return p.pipeline;
+    const int32_t values[6] = {int32_t(workgroupSize_), length, srcStride, dstStride, poolTexels, sourceTexels};
+    VkSpecializationMapEntry entries[6];
+    for (uint32_t i = 0; i < 6; ++i) entries[i] = VkSpecializationMapEntry{i, uint32_t(i * sizeof(int32_t)), sizeof(int32_t)};
+    VkSpecializationInfo spec{6, entries, sizeof(values), values};
     auto info = detail::vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
     info.stage = detail::vkStruct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -189,7 +200,7 @@ VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStri
     info.layout = pipelineLayout_;
     VkPipeline pipeline = VK_NULL_HANDLE;
     vkCheck(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateComputePipelines");
-    pipelines_.push_back({length, srcStride, dstStride, pipeline});
+    pipelines_.push_back({length, srcStride, dstStride, poolTexels, sourceTexels, pipeline});
     return pipeline;
 }
 

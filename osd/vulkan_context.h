@@ -96,6 +96,9 @@ public:
     VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_; }
     VkPipelineLayout pipelineLayout() const { return pipelineLayout_; }
     VkPipeline stencilPipeline(int length, int srcStride, int dstStride);
+    // The same, reading the table's pools (poolTexels) and the source (sourceTexels) through the
+    // layout's texel-buffer bindings instead of its storage buffers (docs/architecture.md).
+    VkPipeline stencilPipeline(int length, int srcStride, int dstStride, bool poolTexels, bool sourceTexels);
     uint32_t workgroupSize() const { return workgroupSize_; }
 
 private:
@@ -125,6 +128,7 @@ private:
     uint32_t workgroupSize_ = 64;
     struct CachedPipeline {
         int length, srcStride, dstStride;
+        bool poolTexels, sourceTexels;
         VkPipeline pipeline;
     };
     std::vector<CachedPipeline> pipelines_;

@@ -81,6 +81,8 @@ private:
                 const VulkanStencilTable& table, int start, int end);
 
     VulkanContext& ctx_;
+    detail::DeviceBuffer unused_;  // behind the texel views bound where a table or source has none
+    detail::TexelView unusedIndexTexels_, unusedFloatTexels_;
     DescriptorArena recorded_;  // sets of EvalStencils / EvalLevels (caller's command buffers)
     DescriptorArena waited_;    // sets of the *AndWait calls, reset after each
 };

@@ -56,7 +56,7 @@ void VulkanFrameEvaluator::recordCage(VkCommandBuffer cmd, const float* cage) {
 }
 
 void VulkanFrameEvaluator::recordLevels(VkCommandBuffer cmd) {
-    if (!levels_.empty()) stencilEvaluator_.EvalLevels(cmd, {source_.buffer(), 0}, kXyz, pointers(levels_));
+    if (!levels_.empty()) stencilEvaluator_.EvalLevels(cmd, {source_.buffer(), 0, source_.texels()}, kXyz, pointers(levels_));
 }
 
 void VulkanFrameEvaluator::recordLimit(VkCommandBuffer cmd) {
