@@ -1,7 +1,5 @@
 #include <quadtri/osd/vulkan_buffer.h>
 
-#include <algorithm>
-#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -22,8 +20,7 @@ VulkanVertexBuffer::VulkanVertexBuffer(VulkanContext& ctx, int numElements, int 
                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                   VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
               VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) {
-    // texelFetch takes an int: no view past 2^31 floats either.
-    if (numFloats() <= std::min<std::size_t>(ctx.properties().limits.maxTexelBufferElements, INT32_MAX))
+    if (numFloats() > 0 && numFloats() <= ctx.texelBufferLimit())
         texels_ = detail::TexelView(ctx, buffer_, VK_FORMAT_R32_SFLOAT);
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         vkCmdFillBuffer(cmd, buffer_.buffer(), 0, VK_WHOLE_SIZE, 0);

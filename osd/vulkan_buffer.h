@@ -24,7 +24,8 @@ public:
 
     VkBuffer buffer() const { return buffer_.buffer(); }
     // An R32_SFLOAT view of the whole buffer, through which the evaluators read it as a source
-    // (faster on lavapipe: docs/architecture.md); VK_NULL_HANDLE past maxTexelBufferElements.
+    // (faster on lavapipe: docs/architecture.md); VK_NULL_HANDLE when empty or past the context's
+    // texelBufferLimit().
     VkBufferView texels() const { return texels_.view(); }
     int numElements() const { return numElements_; }
     int stride() const { return stride_; }

@@ -1,6 +1,7 @@
 #include <quadtri/osd/vulkan_context.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -175,6 +176,9 @@ void VulkanContext::createShared() {
     pl.pPushConstantRanges = &push;
     vkCheck(vkCreatePipelineLayout(device_, &pl, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
     workgroupSize_ = std::min<uint32_t>(64, properties_.limits.maxComputeWorkGroupSize[0]);
+    texelBufferLimit_ = envFlag("QUADTRI_VK_NO_TEXEL_BUFFERS")
+                            ? 0
+                            : std::min<std::size_t>(properties_.limits.maxTexelBufferElements, INT32_MAX);
 }
 
 VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStride) {

@@ -49,7 +49,7 @@ PooledTableBuffers::PooledTableBuffers(VulkanContext& ctx, const HostArrays& a, 
     detail::upload(ctx, regions);
     // Texel views only where the device's limit allows them: the shaders read the storage
     // buffers otherwise.
-    const std::size_t texels = ctx.properties().limits.maxTexelBufferElements;
+    const std::size_t texels = ctx.texelBufferLimit();
     if (a.indices.size() <= texels && a.weights.size() <= texels) {
         indexTexels_ = TexelView(ctx, indices_, VK_FORMAT_R32_SINT);
         weightTexels_ = TexelView(ctx, weights_, VK_FORMAT_R32_SFLOAT);

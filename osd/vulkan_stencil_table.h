@@ -27,7 +27,7 @@ public:
     VkBuffer weightOffsets() const { return weightOffsets_.buffer(); }
     VkBuffer weights() const { return weights_.buffer(); }
     // The index and weight pools as uniform texel buffers (R32_SINT, R32_SFLOAT); VK_NULL_HANDLE
-    // where a pool has more elements than the device's maxTexelBufferElements.
+    // where a pool has more elements than the context's texelBufferLimit().
     VkBufferView indexTexels() const { return indexTexels_.view(); }
     VkBufferView weightTexels() const { return weightTexels_.view(); }
     VkDevice device() const { return device_; }

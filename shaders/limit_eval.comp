@@ -19,7 +19,7 @@ layout(constant_id = 7) const int OUTPUTS = 15;     // bits: position, dU, dV, n
 // Whether the index and weight pools are read through the texel buffers of bindings 12 and 13
 // (lavapipe turns a texel fetch into a vector gather, a storage-buffer load into a branch per
 // lane: docs/architecture.md, "Vulkan on lavapipe") or, where the pools exceed
-// maxTexelBufferElements, through the storage buffers of bindings 2 and 4.
+// the context's texelBufferLimit(), through the storage buffers of bindings 2 and 4.
 layout(constant_id = 8) const bool POOL_TEXELS = true;
 // Whether the source is read through the texel buffer of binding 14 (the caller gave a view).
 layout(constant_id = 9) const bool SOURCE_TEXELS = false;

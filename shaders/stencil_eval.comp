@@ -12,7 +12,7 @@ layout(constant_id = 3) const int DST_STRIDE = 3;
 // Where the index and weight pools (POOL_TEXELS) and the source (SOURCE_TEXELS) are read: through
 // the uniform texel buffers of bindings 6-8, which lavapipe turns into vector gathers where a
 // storage-buffer load is a branch per lane (docs/architecture.md, "Vulkan on lavapipe"), or
-// through the storage buffers (a pool past maxTexelBufferElements, a source with no view).
+// through the storage buffers (a pool past the context's texelBufferLimit(), a source with no view).
 layout(constant_id = 4) const bool POOL_TEXELS = false;
 layout(constant_id = 5) const bool SOURCE_TEXELS = false;
 
