@@ -17,8 +17,11 @@ VulkanVertexBuffer::VulkanVertexBuffer(VulkanContext& ctx, int numElements, int 
     : ctx_(&ctx), numElements_(numElements), stride_(stride),
       buffer_(ctx, numFloats() * sizeof(float),
               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
-                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                  VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
               VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) {
+    if (numFloats() > 0 && numFloats() <= ctx.texelBufferLimit())
+        texels_ = detail::TexelView(ctx, buffer_, VK_FORMAT_R32_SFLOAT);
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         vkCmdFillBuffer(cmd, buffer_.buffer(), 0, VK_WHOLE_SIZE, 0);
         detail::barrierAfterTransferWrite(cmd);

@@ -12,7 +12,8 @@ inline namespace v0 {
 
 class VulkanVertexBuffer {
 public:
-    // Zero-filled. Usable as a storage buffer, a vertex buffer and a transfer source/target.
+    // Zero-filled. Usable as a storage buffer, a vertex buffer, a transfer source/target and a
+    // uniform texel buffer (texels()).
     static VulkanVertexBuffer create(VulkanContext& ctx, int numElements, int stride);
 
     // Copies `count` elements (count*stride floats) from host memory into elements
@@ -22,6 +23,10 @@ public:
     void readBack(float* dst) const;
 
     VkBuffer buffer() const { return buffer_.buffer(); }
+    // An R32_SFLOAT view of the whole buffer, through which the evaluators read it as a source
+    // (faster on lavapipe: docs/architecture.md); VK_NULL_HANDLE when empty or past the context's
+    // texelBufferLimit().
+    VkBufferView texels() const { return texels_.view(); }
     int numElements() const { return numElements_; }
     int stride() const { return stride_; }
     std::size_t numFloats() const { return std::size_t(numElements_) * std::size_t(stride_); }
@@ -31,6 +36,7 @@ private:
     VulkanContext* ctx_;
     int numElements_, stride_;
     detail::DeviceBuffer buffer_;
+    detail::TexelView texels_;
 };
 
 }  // namespace v0

@@ -3,6 +3,7 @@
 #include "osd/internal/vulkan_instance.h"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace quadtri {
 inline namespace v0 {
@@ -14,7 +15,10 @@ extern const std::size_t stencil_eval_comp_words;
 
 namespace {
 
-constexpr uint32_t kNumBindings = 6;  // offsets, indices, weightOffsets, weights, src, dst
+// Storage buffers: offsets, indices, weightOffsets, weights, src, dst; then uniform texel
+// buffers: the index pool, the weight pool, src (shaders/stencil_eval.comp).
+constexpr uint32_t kNumBindings = 9;
+constexpr uint32_t kStorageBindings = 6;
 constexpr uint32_t kPushConstantBytes = 4 * sizeof(uint32_t);
 
 }  // namespace
@@ -84,7 +88,9 @@ void VulkanContext::createShared() {
 
     VkDescriptorSetLayoutBinding bindings[kNumBindings];
     for (uint32_t b = 0; b < kNumBindings; ++b)
-        bindings[b] = VkDescriptorSetLayoutBinding{b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        bindings[b] = VkDescriptorSetLayoutBinding{
+            b, b < kStorageBindings ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1,
+            VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     auto sl = detail::vkStruct<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
     sl.bindingCount = kNumBindings;
     sl.pBindings = bindings;
@@ -98,16 +104,25 @@ void VulkanContext::createShared() {
     pl.pPushConstantRanges = &push;
     vkCheck(vkCreatePipelineLayout(device_, &pl, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
     workgroupSize_ = std::min<uint32_t>(64, properties_.limits.maxComputeWorkGroupSize[0]);
+    texelBufferLimit_ = detail::environmentFlag("QUADTRI_VK_NO_TEXEL_BUFFERS")
+                            ? 0
+                            : std::min<std::size_t>(properties_.limits.maxTexelBufferElements, INT32_MAX);
 }
 
 VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStride) {
+    return stencilPipeline(length, srcStride, dstStride, false, false);
+}
+
+VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStride, bool poolTexels, bool sourceTexels) {
     const std::lock_guard<std::mutex> lock(pipelinesMutex_);
     for (const auto& p : pipelines_)
-        if (p.length == length && p.srcStride == srcStride && p.dstStride == dstStride) return p.pipeline;
-    const int32_t values[4] = {int32_t(workgroupSize_), length, srcStride, dstStride};
-    VkSpecializationMapEntry entries[4];
-    for (uint32_t i = 0; i < 4; ++i) entries[i] = VkSpecializationMapEntry{i, uint32_t(i * sizeof(int32_t)), sizeof(int32_t)};
-    VkSpecializationInfo spec{4, entries, sizeof(values), values};
+        if (p.length == length && p.srcStride == srcStride && p.dstStride == dstStride && p.poolTexels == poolTexels &&
+            p.sourceTexels == sourceTexels)
+            return p.pipeline;
+    const int32_t values[6] = {int32_t(workgroupSize_), length, srcStride, dstStride, poolTexels, sourceTexels};
+    VkSpecializationMapEntry entries[6];
+    for (uint32_t i = 0; i < 6; ++i) entries[i] = VkSpecializationMapEntry{i, uint32_t(i * sizeof(int32_t)), sizeof(int32_t)};
+    VkSpecializationInfo spec{6, entries, sizeof(values), values};
     auto info = detail::vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
     info.stage = detail::vkStruct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -117,7 +132,7 @@ VkPipeline VulkanContext::stencilPipeline(int length, int srcStride, int dstStri
     info.layout = pipelineLayout_;
     VkPipeline pipeline = VK_NULL_HANDLE;
     vkCheck(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateComputePipelines");
-    pipelines_.push_back({length, srcStride, dstStride, pipeline});
+    pipelines_.push_back({length, srcStride, dstStride, poolTexels, sourceTexels, pipeline});
     return pipeline;
 }
 

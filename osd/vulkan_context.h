@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -57,8 +58,9 @@ public:
 
     // Creates a headless instance and device. Environment: QUADTRI_VK_VALIDATION=1 enables
     // VK_LAYER_KHRONOS_validation (when installed) with a messenger that prints and counts its
-    // warnings and errors; QUADTRI_VK_DEVICE picks the device by index or by name substring.
-    // Throws VulkanError when there is no driver or no device with a compute queue.
+    // warnings and errors; QUADTRI_VK_DEVICE picks the device by index or by name substring;
+    // QUADTRI_VK_NO_TEXEL_BUFFERS=1 makes the evaluators read everything through storage buffers
+    // (texelBufferLimit() 0). Throws VulkanError when there is no driver or no device with a compute queue.
     VulkanContext();
     // Adopts the caller's handles (see External).
     explicit VulkanContext(const External& external);
@@ -96,7 +98,14 @@ public:
     VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_; }
     VkPipelineLayout pipelineLayout() const { return pipelineLayout_; }
     VkPipeline stencilPipeline(int length, int srcStride, int dstStride);
+    // The same, reading the table's pools (poolTexels) and the source (sourceTexels) through the
+    // layout's texel-buffer bindings instead of its storage buffers (docs/architecture.md).
+    VkPipeline stencilPipeline(int length, int srcStride, int dstStride, bool poolTexels, bool sourceTexels);
     uint32_t workgroupSize() const { return workgroupSize_; }
+    // The most elements the evaluators read through one uniform texel buffer view (tables' pools,
+    // VulkanVertexBuffer::texels()): min(maxTexelBufferElements, 2^31 - 1), texelFetch taking an
+    // int; 0 under QUADTRI_VK_NO_TEXEL_BUFFERS=1 (adopted devices too).
+    std::size_t texelBufferLimit() const { return texelBufferLimit_; }
 
 private:
     static int computeQueueFamily(VkPhysicalDevice pd);  // first family with compute, or -1
@@ -123,8 +132,10 @@ private:
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
     uint32_t workgroupSize_ = 64;
+    std::size_t texelBufferLimit_ = 0;
     struct CachedPipeline {
         int length, srcStride, dstStride;
+        bool poolTexels, sourceTexels;
         VkPipeline pipeline;
     };
     std::vector<CachedPipeline> pipelines_;

@@ -14,7 +14,9 @@ inline namespace v0 {
 namespace {
 
 constexpr uint32_t kSetsPerPool = 64;
-constexpr uint32_t kBindings = 6;
+constexpr uint32_t kStorageBindings = 6;  // the context's layout (shaders/stencil_eval.comp)
+constexpr uint32_t kTexelBindings = 3;
+constexpr uint32_t kBindings = kStorageBindings + kTexelBindings;
 
 // Floats needed to hold `count` elements of `d` (0 when count is 0).
 std::size_t floatsNeeded(const BufferDescriptor& d, int count) {
@@ -35,7 +37,10 @@ uint32_t toU32(std::size_t v, const char* what) {
 
 }  // namespace
 
-VulkanEvaluator::VulkanEvaluator(VulkanContext& ctx) : ctx_(ctx) {}
+VulkanEvaluator::VulkanEvaluator(VulkanContext& ctx)
+    : ctx_(ctx),
+      unused_(ctx, 16, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+      unusedIndexTexels_(ctx, unused_, VK_FORMAT_R32_SINT), unusedFloatTexels_(ctx, unused_, VK_FORMAT_R32_SFLOAT) {}
 
 VulkanEvaluator::~VulkanEvaluator() {
     for (DescriptorArena* a : {&recorded_, &waited_})
@@ -46,11 +51,13 @@ VkDescriptorSet VulkanEvaluator::allocateSet(DescriptorArena& arena) {
     const VkDescriptorSetLayout layout = ctx_.descriptorSetLayout();
     for (;; ++arena.current) {
         if (arena.current == arena.pools.size()) {
-            const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSetsPerPool * kBindings};
+            const VkDescriptorPoolSize sizes[2] = {
+                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSetsPerPool * kStorageBindings},
+                {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, kSetsPerPool * kTexelBindings}};
             auto pi = detail::vkStruct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
             pi.maxSets = kSetsPerPool;
-            pi.poolSizeCount = 1;
-            pi.pPoolSizes = &size;
+            pi.poolSizeCount = 2;
+            pi.pPoolSizes = sizes;
             VkDescriptorPool pool = VK_NULL_HANDLE;
             vkCheck(vkCreateDescriptorPool(ctx_.device(), &pi, nullptr, &pool), "vkCreateDescriptorPool");
             arena.pools.push_back(pool);
@@ -89,14 +96,24 @@ void VulkanEvaluator::record(VkCommandBuffer cmd, DescriptorArena& arena, const 
     const VkDeviceSize align = std::max<VkDeviceSize>(4, ctx_.properties().limits.minStorageBufferOffsetAlignment);
     const VkDeviceSize srcBase = src.byteOffset - src.byteOffset % align;
     const VkDeviceSize dstBase = dst.byteOffset - dst.byteOffset % align;
-    const uint32_t srcOffset = toU32((src.byteOffset - srcBase) / 4 + std::size_t(srcDesc.offset), "source offset");
+    // The source's texel view (when given) starts at the buffer's byte 0, its storage binding at srcBase.
+    const std::size_t texelOffset = src.byteOffset / 4 + std::size_t(srcDesc.offset);
+    const bool sourceTexels = src.texels != VK_NULL_HANDLE && texelOffset <= std::size_t(INT32_MAX);
+    const bool poolTexels = table.indexTexels() != VK_NULL_HANDLE;
+    const uint32_t srcOffset = sourceTexels ? uint32_t(texelOffset)
+                                            : toU32((src.byteOffset - srcBase) / 4 + std::size_t(srcDesc.offset), "source offset");
     const uint32_t dstOffset = toU32((dst.byteOffset - dstBase) / 4 + std::size_t(dstDesc.offset), "destination offset");
 
     const VkDescriptorSet set = allocateSet(arena);
-    const VkDescriptorBufferInfo infos[kBindings] = {
+    const VkDescriptorBufferInfo infos[kStorageBindings] = {
         {table.offsets(), 0, VK_WHOLE_SIZE},       {table.indices(), 0, VK_WHOLE_SIZE},
         {table.weightOffsets(), 0, VK_WHOLE_SIZE}, {table.weights(), 0, VK_WHOLE_SIZE},
         {src.buffer, srcBase, VK_WHOLE_SIZE},      {dst.buffer, dstBase, VK_WHOLE_SIZE},
+    };
+    const VkBufferView texels[kTexelBindings] = {
+        poolTexels ? table.indexTexels() : unusedIndexTexels_.view(),
+        poolTexels ? table.weightTexels() : unusedFloatTexels_.view(),
+        sourceTexels ? src.texels : unusedFloatTexels_.view(),
     };
     VkWriteDescriptorSet writes[kBindings];
     for (uint32_t b = 0; b < kBindings; ++b) {
@@ -104,13 +121,18 @@ void VulkanEvaluator::record(VkCommandBuffer cmd, DescriptorArena& arena, const 
         writes[b].dstSet = set;
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
-        writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[b].pBufferInfo = &infos[b];
+        if (b < kStorageBindings) {
+            writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            writes[b].pBufferInfo = &infos[b];
+        } else {
+            writes[b].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+            writes[b].pTexelBufferView = &texels[b - kStorageBindings];
+        }
     }
     vkUpdateDescriptorSets(ctx_.device(), kBindings, writes, 0, nullptr);
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                      ctx_.stencilPipeline(srcDesc.length, srcDesc.stride, dstDesc.stride));
+                      ctx_.stencilPipeline(srcDesc.length, srcDesc.stride, dstDesc.stride, poolTexels, sourceTexels));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx_.pipelineLayout(), 0, 1, &set, 0, nullptr);
     // At most maxComputeWorkGroupCount[0] workgroups per dispatch: split long ranges.
     const uint32_t group = ctx_.workgroupSize();
@@ -144,7 +166,7 @@ void VulkanEvaluator::EvalStencils(VkCommandBuffer cmd, const VulkanVertexBuffer
     if (!detail::checkEvalArguments(true, srcDesc, true, dstDesc, table.numStencils(), start, last)) return;
     checkFits("source", src, srcDesc, table.numSourceVertices());
     checkFits("destination", dst, dstDesc, last);
-    record(cmd, recorded_, {src.buffer(), 0}, srcDesc, {dst.buffer(), 0}, dstDesc, table, start, end);
+    record(cmd, recorded_, {src.buffer(), 0, src.texels()}, srcDesc, {dst.buffer(), 0}, dstDesc, table, start, end);
 }
 
 void VulkanEvaluator::EvalStencilsAndWait(const VulkanVertexBuffer& src, const BufferDescriptor& srcDesc,
@@ -156,7 +178,7 @@ void VulkanEvaluator::EvalStencilsAndWait(const VulkanVertexBuffer& src, const B
     checkFits("destination", dst, dstDesc, last);
     try {
         ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-            record(cmd, waited_, {src.buffer(), 0}, srcDesc, {dst.buffer(), 0}, dstDesc, table, start, end);
+            record(cmd, waited_, {src.buffer(), 0, src.texels()}, srcDesc, {dst.buffer(), 0}, dstDesc, table, start, end);
         });
     } catch (...) {
         reset(waited_);
@@ -202,7 +224,8 @@ void VulkanEvaluator::EvalLevelsAndWait(VulkanVertexBuffer& buffer, const Buffer
             for (std::size_t L = 0; L < tables.size(); ++L) {
                 const BufferDescriptor src(level0.offset + first[L] * level0.stride, level0.length, level0.stride);
                 const BufferDescriptor dst(level0.offset + first[L + 1] * level0.stride, level0.length, level0.stride);
-                record(cmd, waited_, {buffer.buffer(), 0}, src, {buffer.buffer(), 0}, dst, *tables[L], 0, -1);
+                record(cmd, waited_, {buffer.buffer(), 0, buffer.texels()}, src, {buffer.buffer(), 0}, dst, *tables[L], 0,
+                       -1);
             }
         });
     } catch (...) {

@@ -22,6 +22,10 @@ inline namespace v0 {
 struct VulkanBufferRef {
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceSize byteOffset = 0;
+    // Optional, for a source: an R32_SFLOAT uniform texel view of the whole buffer (texel 0 at its
+    // byte 0; VulkanVertexBuffer::texels()), read instead of the storage buffer where the shader
+    // supports it (faster on lavapipe: docs/architecture.md).
+    VkBufferView texels = VK_NULL_HANDLE;
 };
 
 class VulkanEvaluator {
@@ -77,6 +81,8 @@ private:
                 const VulkanStencilTable& table, int start, int end);
 
     VulkanContext& ctx_;
+    detail::DeviceBuffer unused_;  // behind the texel views bound where a table or source has none
+    detail::TexelView unusedIndexTexels_, unusedFloatTexels_;
     DescriptorArena recorded_;  // sets of EvalStencils / EvalLevels (caller's command buffers)
     DescriptorArena waited_;    // sets of the *AndWait calls, reset after each
 };

@@ -15,11 +15,6 @@ namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
-bool envFlag(const char* name) {
-    const char* v = std::getenv(name);
-    return v && *v && std::strcmp(v, "0") != 0;
-}
-
 bool hasLayer(const char* name) {
     uint32_t n = 0;
     if (vkEnumerateInstanceLayerProperties(&n, nullptr) != VK_SUCCESS) return false;
@@ -54,14 +49,19 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT 
 
 int totalValidationMessages() { return totalMessages().load(); }
 
+bool environmentFlag(const char* name) {
+    const char* v = std::getenv(name);
+    return v && *v && std::strcmp(v, "0") != 0;
+}
+
 ValidatedInstance createValidatedInstance(const std::vector<const char*>& extensions, std::atomic<int>* counter) {
     auto app = vkStruct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
     app.pApplicationName = "quadtri";
     app.pEngineName = "quadtri";
     app.apiVersion = VK_API_VERSION_1_1;
 
-    const bool validation = envFlag("QUADTRI_VK_VALIDATION") && hasLayer(kValidationLayer);
-    if (envFlag("QUADTRI_VK_VALIDATION") && !validation)
+    const bool validation = environmentFlag("QUADTRI_VK_VALIDATION") && hasLayer(kValidationLayer);
+    if (environmentFlag("QUADTRI_VK_VALIDATION") && !validation)
         std::fprintf(stderr, "quadtri: QUADTRI_VK_VALIDATION is set but %s is not installed\n", kValidationLayer);
     std::vector<const char*> enabled = extensions;
     std::vector<const char*> layers;

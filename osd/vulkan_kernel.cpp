@@ -13,9 +13,10 @@ namespace {
 constexpr uint32_t kSetsPerPool = 64;
 }  // namespace
 
-VulkanKernel::VulkanKernel(VulkanContext& ctx, const uint32_t* spirv, std::size_t words, uint32_t bindings,
-                           uint32_t pushWords)
-    : ctx_(ctx), bindings_(bindings), pushWords_(pushWords) {
+VulkanKernel::VulkanKernel(VulkanContext& ctx, const uint32_t* spirv, std::size_t words,
+                           const std::vector<VkDescriptorType>& types, uint32_t pushWords)
+    : ctx_(ctx), types_(types), bindings_(uint32_t(types.size())), pushWords_(pushWords) {
+    const uint32_t bindings = bindings_;
     const VkDevice device = ctx.device();
     try {
         auto sm = vkStruct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
@@ -24,7 +25,7 @@ VulkanKernel::VulkanKernel(VulkanContext& ctx, const uint32_t* spirv, std::size_
         vkCheck(vkCreateShaderModule(device, &sm, nullptr, &shader_), "vkCreateShaderModule");
         std::vector<VkDescriptorSetLayoutBinding> b(bindings);
         for (uint32_t i = 0; i < bindings; ++i)
-            b[i] = VkDescriptorSetLayoutBinding{i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+            b[i] = VkDescriptorSetLayoutBinding{i, types_[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
         auto sl = vkStruct<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
         sl.bindingCount = bindings;
         sl.pBindings = b.data();
@@ -84,11 +85,17 @@ VkPipeline VulkanKernel::pipeline(const std::vector<int32_t>& constants) {
 VkDescriptorSet VulkanKernel::allocateSet(Pools& arena) {
     for (;; ++arena.current) {
         if (arena.current == arena.pools.size()) {
-            const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSetsPerPool * bindings_};
+            std::vector<VkDescriptorPoolSize> sizes;
+            for (VkDescriptorType t : types_) {
+                auto same = [t](const VkDescriptorPoolSize& s) { return s.type == t; };
+                auto it = std::find_if(sizes.begin(), sizes.end(), same);
+                if (it == sizes.end()) it = sizes.insert(sizes.end(), VkDescriptorPoolSize{t, 0});
+                it->descriptorCount += kSetsPerPool;
+            }
             auto pi = vkStruct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
             pi.maxSets = kSetsPerPool;
-            pi.poolSizeCount = 1;
-            pi.pPoolSizes = &size;
+            pi.poolSizeCount = uint32_t(sizes.size());
+            pi.pPoolSizes = sizes.data();
             VkDescriptorPool pool = VK_NULL_HANDLE;
             vkCheck(vkCreateDescriptorPool(ctx_.device(), &pi, nullptr, &pool), "vkCreateDescriptorPool");
             arena.pools.push_back(pool);
@@ -112,7 +119,7 @@ void VulkanKernel::resetSets(Arena which) {
 
 void VulkanKernel::record(VkCommandBuffer cmd, Arena which, const std::vector<VkDescriptorBufferInfo>& buffers,
                           const std::vector<int32_t>& constants, const std::vector<uint32_t>& words, int start,
-                          int end) {
+                          int end, const std::vector<VkBufferView>& texels) {
     const VkDescriptorSet set = allocateSet(which == Arena::Recorded ? recorded_ : waited_);
     std::vector<VkWriteDescriptorSet> writes(bindings_);
     for (uint32_t b = 0; b < bindings_; ++b) {
@@ -120,8 +127,11 @@ void VulkanKernel::record(VkCommandBuffer cmd, Arena which, const std::vector<Vk
         writes[b].dstSet = set;
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
-        writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[b].pBufferInfo = &buffers.at(b);
+        writes[b].descriptorType = types_[b];
+        if (types_[b] == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER)
+            writes[b].pTexelBufferView = &texels.at(b);
+        else
+            writes[b].pBufferInfo = &buffers.at(b);
     }
     vkUpdateDescriptorSets(ctx_.device(), bindings_, writes.data(), 0, nullptr);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(constants));

@@ -20,9 +20,16 @@ extern const std::size_t mesh_normals_comp_words;
 
 namespace {
 
-constexpr uint32_t kLimitBindings = 12;  // table (5), source, 4 outputs, fallback table (2)
+constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+// table (5: sizes, offsets, the index pool, weight offsets, the weight pool), source, 4 outputs,
+// fallback table (2), then the two pools and the source again as texel buffers
+// (shaders/limit_eval.comp).
+const std::vector<VkDescriptorType> kLimitBindings = {kStorage, kStorage, kStorage, kStorage, kStorage,
+                                                      kStorage, kStorage, kStorage, kStorage, kStorage,
+                                                      kStorage, kStorage, kTexels,  kTexels,  kTexels};
 constexpr uint32_t kLimitPushWords = 7;  // 5 float offsets, start, end
-constexpr uint32_t kNormalBindings = 4;  // table (2), source, destination
+const std::vector<VkDescriptorType> kNormalBindings(4, kStorage);  // table (2), source, destination
 constexpr uint32_t kNormalPushWords = 4;
 
 // Floats needed to hold `count` elements of `d` (0 when count is 0).
@@ -46,7 +53,9 @@ VulkanLimitEvaluator::VulkanLimitEvaluator(VulkanContext& ctx)
                                                     kLimitBindings, kLimitPushWords)),
       normals_(std::make_unique<detail::VulkanKernel>(ctx, shaders::mesh_normals_comp, shaders::mesh_normals_comp_words,
                                                       kNormalBindings, kNormalPushWords)),
-      unused_(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) {}
+      unused_(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+      unusedIndexTexels_(ctx, unused_, VK_FORMAT_R32_SINT), unusedWeightTexels_(ctx, unused_, VK_FORMAT_R32_SFLOAT) {}
 
 VulkanLimitEvaluator::~VulkanLimitEvaluator() = default;
 
@@ -81,7 +90,10 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
         {table.sizes(), 0, VK_WHOLE_SIZE},         {table.offsets(), 0, VK_WHOLE_SIZE},
         {table.indices(), 0, VK_WHOLE_SIZE},       {table.weightOffsets(), 0, VK_WHOLE_SIZE},
         {table.weights(), 0, VK_WHOLE_SIZE},       source.info};
-    std::vector<uint32_t> words{source.floatOffset};
+    // The source's texel view starts at the buffer's byte 0, its storage binding at source.info.
+    const std::size_t texelOffset = src.byteOffset / 4 + std::size_t(srcDesc.offset);
+    const bool sourceTexels = src.texels != VK_NULL_HANDLE && texelOffset <= std::size_t(INT32_MAX);
+    std::vector<uint32_t> words{sourceTexels ? uint32_t(texelOffset) : source.floatOffset};
     std::vector<int32_t> constants{srcDesc.length, srcDesc.stride};
     int32_t mask = 0;
     for (int k = 0; k < 4; ++k) {
@@ -105,7 +117,15 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
         for (int k = 0; k < 2; ++k) infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
     }
     constants.push_back(mask);
-    limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end);
+    const bool poolTexels = table.indexTexels() != VK_NULL_HANDLE;
+    constants.push_back(poolTexels);
+    constants.push_back(sourceTexels);
+    std::vector<VkBufferView> texels(kLimitBindings.size(), VK_NULL_HANDLE);
+    texels[12] = poolTexels ? table.indexTexels() : unusedIndexTexels_.view();
+    texels[13] = poolTexels ? table.weightTexels() : unusedWeightTexels_.view();
+    texels[14] = sourceTexels ? src.texels : unusedWeightTexels_.view();
+    limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end,
+                   texels);
 }
 
 void VulkanLimitEvaluator::EvalLimitStencils(VkCommandBuffer cmd, const VulkanBufferRef& src,
@@ -141,7 +161,7 @@ void VulkanLimitEvaluator::EvalLimitStencilsAndWait(
     const BufferDescriptor* const descs[4] = {&positionDesc, &duDesc, &dvDesc, &normalDesc};
     try {
         ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-            recordLimit(cmd, true, {src.buffer(), 0}, srcDesc, outputs, descs, table, fallback, start, end);
+            recordLimit(cmd, true, {src.buffer(), 0, src.texels()}, srcDesc, outputs, descs, table, fallback, start, end);
         });
     } catch (...) {
         resetWaited();

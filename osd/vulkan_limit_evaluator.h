@@ -73,6 +73,7 @@ private:
     VulkanContext& ctx_;
     std::unique_ptr<detail::VulkanKernel> limit_, normals_;
     detail::DeviceBuffer unused_;  // bound where an output or the fallback is absent
+    detail::TexelView unusedIndexTexels_, unusedWeightTexels_;  // where a table's pools have no texel views
 };
 
 }  // namespace v0

@@ -53,6 +53,29 @@ void DeviceBuffer::reset() noexcept {
     buffer_ = VK_NULL_HANDLE, memory_ = VK_NULL_HANDLE, mapped_ = nullptr, size_ = 0, device_ = VK_NULL_HANDLE;
 }
 
+TexelView::TexelView(VulkanContext& ctx, const DeviceBuffer& buffer, VkFormat format) : device_(ctx.device()) {
+    auto vi = detail::vkStruct<VkBufferViewCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO);
+    vi.buffer = buffer.buffer();
+    vi.format = format;
+    vi.offset = 0;
+    vi.range = VK_WHOLE_SIZE;
+    vkCheck(vkCreateBufferView(device_, &vi, nullptr, &view_), "vkCreateBufferView");
+}
+
+TexelView& TexelView::operator=(TexelView&& other) noexcept {
+    if (this != &other) {
+        reset();
+        device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+    }
+    return *this;
+}
+
+void TexelView::reset() noexcept {
+    if (device_ && view_) vkDestroyBufferView(device_, view_, nullptr);
+    view_ = VK_NULL_HANDLE, device_ = VK_NULL_HANDLE;
+}
+
 namespace {
 
 constexpr VkMemoryPropertyFlags kHostMemory = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;

@@ -37,6 +37,27 @@ private:
     void* mapped_ = nullptr;
 };
 
+// A VkBufferView over a whole buffer created with VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT: the
+// shaders read the tables' pools through it (texelFetch), which lavapipe compiles to vector
+// gathers where a storage-buffer load is a branch per lane (docs/architecture.md, "Vulkan").
+class TexelView {
+public:
+    TexelView() = default;
+    TexelView(VulkanContext& ctx, const DeviceBuffer& buffer, VkFormat format);
+    ~TexelView() { reset(); }
+    TexelView(TexelView&& other) noexcept { *this = std::move(other); }
+    TexelView& operator=(TexelView&& other) noexcept;
+    TexelView(const TexelView&) = delete;
+    TexelView& operator=(const TexelView&) = delete;
+
+    VkBufferView view() const { return view_; }
+    void reset() noexcept;
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkBufferView view_ = VK_NULL_HANDLE;
+};
+
 // One host <-> device copy: `bytes` bytes between host memory and buffer at byte `offset`.
 struct CopyRegion {
     VkBuffer buffer;

@@ -35,8 +35,9 @@ PooledTableBuffers::PooledTableBuffers(VulkanContext& ctx, const HostArrays& a, 
     if (!consistent(a)) throw std::invalid_argument(std::string("Vulkan") + table + ": inconsistent " + table + " arrays");
     constexpr VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     constexpr VkMemoryPropertyFlags local = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    constexpr VkBufferUsageFlags pool = usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     auto add = [&](DeviceBuffer& to, const void* data, std::size_t bytes, std::vector<CopyRegion>& regions) {
-        to = DeviceBuffer(ctx, bytes, usage, local);
+        to = DeviceBuffer(ctx, bytes, &to == &indices_ || &to == &weights_ ? pool : usage, local);
         regions.push_back({to.buffer(), 0, data, nullptr, bytes});
     };
     std::vector<CopyRegion> regions;
@@ -46,6 +47,13 @@ PooledTableBuffers::PooledTableBuffers(VulkanContext& ctx, const HostArrays& a, 
     add(weightOffsets_, a.weightOffsets.data(), a.weightOffsets.size() * sizeof(int), regions);
     add(weights_, a.weights.data(), a.weights.size() * sizeof(float), regions);
     detail::upload(ctx, regions);
+    // Texel views only where the device's limit allows them: the shaders read the storage
+    // buffers otherwise.
+    const std::size_t texels = ctx.texelBufferLimit();
+    if (a.indices.size() <= texels && a.weights.size() <= texels) {
+        indexTexels_ = TexelView(ctx, indices_, VK_FORMAT_R32_SINT);
+        weightTexels_ = TexelView(ctx, weights_, VK_FORMAT_R32_SFLOAT);
+    }
 }
 
 }  // namespace detail

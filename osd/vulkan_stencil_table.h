@@ -26,6 +26,10 @@ public:
     VkBuffer indices() const { return indices_.buffer(); }
     VkBuffer weightOffsets() const { return weightOffsets_.buffer(); }
     VkBuffer weights() const { return weights_.buffer(); }
+    // The index and weight pools as uniform texel buffers (R32_SINT, R32_SFLOAT); VK_NULL_HANDLE
+    // where a pool has more elements than the context's texelBufferLimit().
+    VkBufferView indexTexels() const { return indexTexels_.view(); }
+    VkBufferView weightTexels() const { return weightTexels_.view(); }
     VkDevice device() const { return device_; }
 
     // A table's arrays as the constructor reads them. sizes null: CSR, stencil i's entries
@@ -54,6 +58,7 @@ private:
     VkDevice device_;
     int numStencils_ = 0, numSourceVertices_ = 0;
     DeviceBuffer sizes_, offsets_, indices_, weightOffsets_, weights_;
+    TexelView indexTexels_, weightTexels_;
 };
 
 }  // namespace detail

@@ -16,6 +16,13 @@ layout(constant_id = 4) const int DU_STRIDE = 3;
 layout(constant_id = 5) const int DV_STRIDE = 3;
 layout(constant_id = 6) const int NORMAL_STRIDE = 3;
 layout(constant_id = 7) const int OUTPUTS = 15;     // bits: position, dU, dV, normal, fallback
+// Whether the index and weight pools are read through the texel buffers of bindings 12 and 13
+// (lavapipe turns a texel fetch into a vector gather, a storage-buffer load into a branch per
+// lane: docs/architecture.md, "Vulkan on lavapipe") or, where the pools exceed
+// the context's texelBufferLimit(), through the storage buffers of bindings 2 and 4.
+layout(constant_id = 8) const bool POOL_TEXELS = true;
+// Whether the source is read through the texel buffer of binding 14 (the caller gave a view).
+layout(constant_id = 9) const bool SOURCE_TEXELS = false;
 
 const float DEGENERATE_SINE = 1e-4;
 const bool WRITE_POSITION = (OUTPUTS & 1) != 0;
@@ -36,6 +43,9 @@ layout(std430, set = 0, binding = 8) writeonly buffer Dv { float dv[]; };
 layout(std430, set = 0, binding = 9) writeonly buffer Normal { float normal[]; };
 layout(std430, set = 0, binding = 10) readonly buffer FallbackOffsets { int fallbackOffsets[]; };
 layout(std430, set = 0, binding = 11) readonly buffer FallbackCorners { int fallbackCorners[]; };
+layout(set = 0, binding = 12) uniform isamplerBuffer indexTexels;  // the same pools as texels
+layout(set = 0, binding = 13) uniform samplerBuffer weightTexels;
+layout(set = 0, binding = 14) uniform samplerBuffer srcTexels;  // pc.srcOffset counts from its texel 0
 
 layout(push_constant) uniform Push {
     uint srcOffset;  // floats before element 0 in each bound range
@@ -47,9 +57,14 @@ layout(push_constant) uniform Push {
     uint end;
 } pc;
 
+int poolIndex(int k) { return POOL_TEXELS ? texelFetch(indexTexels, k).x : indices[k]; }
+float poolWeight(int k) { return POOL_TEXELS ? texelFetch(weightTexels, k).x : weights[k]; }
+
+float sourceFloat(uint s) { return SOURCE_TEXELS ? texelFetch(srcTexels, int(s)).x : src[s]; }
+
 vec3 source(int v) {
     const uint s = pc.srcOffset + uint(v) * uint(SRC_STRIDE);
-    return vec3(src[s], src[s + 1u], src[s + 2u]);
+    return vec3(sourceFloat(s), sourceFloat(s + 1u), sourceFloat(s + 2u));
 }
 
 vec3 meshNormal(uint v) {
@@ -70,13 +85,15 @@ void main() {
     const int first = offsets[i];
     const int n = sizes[i];
     int w = weightOffsets[i];
-    const uint s0 = n > 0 ? pc.srcOffset + uint(indices[first]) * uint(SRC_STRIDE) : 0u;
+    float base[LENGTH];
+    const uint s0 = n > 0 ? pc.srcOffset + uint(poolIndex(first)) * uint(SRC_STRIDE) : 0u;
+    for (int c = 0; c < LENGTH; ++c) base[c] = n > 0 ? sourceFloat(s0 + uint(c)) : 0.0;
     for (int k = 0; k < n; ++k, w += 3) {
-        const uint s = pc.srcOffset + uint(indices[first + k]) * uint(SRC_STRIDE);
-        const float wp = weights[w], wu = weights[w + 1], wv = weights[w + 2];
+        const uint s = pc.srcOffset + uint(poolIndex(first + k)) * uint(SRC_STRIDE);
+        const float wp = poolWeight(w), wu = poolWeight(w + 1), wv = poolWeight(w + 2);
         for (int c = 0; c < LENGTH; ++c) {
-            const float x = src[s + uint(c)];
-            const float d = x - src[s0 + uint(c)];
+            const float x = sourceFloat(s + uint(c));
+            const float d = x - base[c];
             p[c] += wp * x;
             u[c] += wu * d;
             v[c] += wv * d;

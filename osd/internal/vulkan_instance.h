@@ -26,6 +26,9 @@ ValidatedInstance createValidatedInstance(const std::vector<const char*>& extens
 void destroyValidatedInstance(ValidatedInstance& instance) noexcept;
 // Findings counted by every messenger of the process so far, destroyed ones included.
 int totalValidationMessages();
+// Whether environment variable `name` is set to something other than "" or "0" (the
+// QUADTRI_VK_* switches).
+bool environmentFlag(const char* name);
 
 }  // namespace detail
 }  // namespace v0

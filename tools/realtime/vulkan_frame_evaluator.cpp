@@ -56,13 +56,13 @@ void VulkanFrameEvaluator::recordCage(VkCommandBuffer cmd, const float* cage) {
 }
 
 void VulkanFrameEvaluator::recordLevels(VkCommandBuffer cmd) {
-    if (!levels_.empty()) stencilEvaluator_.EvalLevels(cmd, {source_.buffer(), 0}, kXyz, pointers(levels_));
+    if (!levels_.empty()) stencilEvaluator_.EvalLevels(cmd, {source_.buffer(), 0, source_.texels()}, kXyz, pointers(levels_));
 }
 
 void VulkanFrameEvaluator::recordLimit(VkCommandBuffer cmd) {
     // The limit table reads the last level: the cage itself for a factorized table.
     const VkDeviceSize lastLevel = VkDeviceSize(levelFirst_[levelFirst_.size() - 2]) * 3 * sizeof(float);
-    limitEvaluator_.EvalLimitStencils(cmd, {source_.buffer(), lastLevel}, kXyz, {positions_.buffer(), 0}, kXyz, {},
+    limitEvaluator_.EvalLimitStencils(cmd, {source_.buffer(), lastLevel, source_.texels()}, kXyz, {positions_.buffer(), 0}, kXyz, {},
                                       kXyz, {}, kXyz, {normals_.buffer(), 0}, kXyz, limit_, fallback_.get());
 }
 
