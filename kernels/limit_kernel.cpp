@@ -2,18 +2,13 @@
 // data the AVX2 + FMA loop where the CPU has both (checked once per process).
 #include "kernels/limit_kernel.h"
 
+#include "kernels/cpu_features.h"
+
 namespace quadtri {
 inline namespace v0 {
 namespace kernels {
 
-bool limitKernelUsesAvx2() {
-#if defined(QUADTRI_HAVE_AVX2_KERNELS)
-    static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    return available;
-#else
-    return false;
-#endif
-}
+bool limitKernelUsesAvx2() { return cpuRunsAvx2Kernels(); }
 
 void degenerateNormalOutOfLine(const float* src, int srcStride, const LimitOutputs& o, int i, float* d) {
     degenerateNormal(src, srcStride, o, i, d);

@@ -2,18 +2,13 @@
 // 4-float data the AVX2 + FMA loops where the CPU has both (checked once per process).
 #include "kernels/stencil_kernel.h"
 
+#include "kernels/cpu_features.h"
+
 namespace quadtri {
 inline namespace v0 {
 namespace kernels {
 
-bool stencilKernelUsesAvx2() {
-#if defined(QUADTRI_HAVE_AVX2_KERNELS)
-    static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    return available;
-#else
-    return false;
-#endif
-}
+bool stencilKernelUsesAvx2() { return cpuRunsAvx2Kernels(); }
 
 void evalStencils(const float* src, int srcStride, float* dst, int dstStride, int width, const StencilArrays& t,
                   int start, int end) {
