@@ -14,25 +14,11 @@ file(MAKE_DIRECTORY "${WORK}")
 # it). Only leak checking is off for those runs; address and undefined-behaviour checks stay on.
 set(VULKAN_PREFIX ${CMAKE_COMMAND} -E env ASAN_OPTIONS=detect_leaks=0:abort_on_error=1)
 
-# run(<expected exit code> <args>...): runs quadtri, leaves OUT, ERR and the command line in CMD.
+include(${CMAKE_CURRENT_LIST_DIR}/cli_script_support.cmake)
+# run(<expected exit code> <args>...): run_quadtri under RUN_PREFIX.
 macro(run expected)
-  set(CMD "quadtri ${ARGN}")
-  execute_process(COMMAND ${RUN_PREFIX} "${QUADTRI}" ${ARGN} RESULT_VARIABLE RC OUTPUT_VARIABLE OUT ERROR_VARIABLE ERR
-                  TIMEOUT 120)
-  if(NOT "${RC}" STREQUAL "${expected}")
-    message(FATAL_ERROR "${CMD}: exit status '${RC}', expected ${expected}\nstdout:\n${OUT}\nstderr:\n${ERR}")
-  endif()
-  if(NOT "${expected}" STREQUAL "0" AND NOT ERR MATCHES "^quadtri: ")
-    message(FATAL_ERROR "${CMD}: stderr does not start with 'quadtri: ':\n${ERR}")
-  endif()
+  run_quadtri(RUN_PREFIX ${expected} ${ARGN})
 endmacro()
-
-function(expect_contains text needle)
-  string(FIND "${text}" "${needle}" pos)
-  if(pos EQUAL -1)
-    message(FATAL_ERROR "${CMD}: expected '${needle}' in:\n${text}")
-  endif()
-endfunction()
 
 # Number of lines of `file` starting with `prefix` (e.g. "v ").
 function(count_lines file prefix outvar)

@@ -12,27 +12,14 @@ file(MAKE_DIRECTORY "${WORK}")
 # sanitizer build (lavapipe's globals once the loader unloads it, as in cli_test.cmake).
 set(PREFIX ${CMAKE_COMMAND} -E env QUADTRI_VK_VALIDATION=1 ASAN_OPTIONS=detect_leaks=0:abort_on_error=1)
 
+include(${CMAKE_CURRENT_LIST_DIR}/cli_script_support.cmake)
 macro(run expected)
-  set(CMD "quadtri ${ARGN}")
-  execute_process(COMMAND ${PREFIX} ${EXTRA_ENV} "${QUADTRI}" ${ARGN} RESULT_VARIABLE RC OUTPUT_VARIABLE OUT
-                  ERROR_VARIABLE ERR TIMEOUT 120)
-  if(NOT "${RC}" STREQUAL "${expected}")
-    message(FATAL_ERROR "${CMD}: exit status '${RC}', expected ${expected}\nstdout:\n${OUT}\nstderr:\n${ERR}")
-  endif()
+  set(RUN_PREFIX ${PREFIX} ${EXTRA_ENV})
+  run_quadtri(RUN_PREFIX ${expected} ${ARGN})
   if("${expected}" STREQUAL "0" AND ERR MATCHES "Vulkan validation (warning|error)|validation layer reported")
     message(FATAL_ERROR "${CMD}: the validation layer spoke:\n${ERR}")
   endif()
-  if(NOT "${expected}" STREQUAL "0" AND NOT ERR MATCHES "^quadtri: ")
-    message(FATAL_ERROR "${CMD}: stderr does not start with 'quadtri: ':\n${ERR}")
-  endif()
 endmacro()
-
-function(expect_contains text needle)
-  string(FIND "${text}" "${needle}" pos)
-  if(pos EQUAL -1)
-    message(FATAL_ERROR "${CMD}: expected '${needle}' in:\n${text}")
-  endif()
-endfunction()
 
 # A PNG: the 8-byte signature, then the IHDR chunk with the width and height (big-endian).
 function(expect_png file width height)
