@@ -136,6 +136,11 @@ std::size_t FrameCase::chainTableBytes() const {
 void FrameCase::prepare(float radians) {
     const std::string where = name_ + " level " + std::to_string(level_) + ": the frame ";
     const double tolerance = 1e-5 * diagonal_;
+    // The chain's tangents are differences of level N's float positions over edges that halve
+    // every level, so their rounding doubles per level: on the bent quad torus its normals lie
+    // 5.9e-4, 1.4e-3 and 4.9e-3 from the factorized table's at levels 2-4, whose own agree with
+    // OpenSubdiv's within 2e-4 rad (checked by the caller).
+    const double chainNormals = std::ldexp(1e-3, std::max(1, level_ - 1));
     std::map<std::string, std::pair<std::vector<float>, std::vector<float>>> serial;  // CpuEvaluator's, per route
     std::vector<float> p, n;
     for (Way& w : ways_) {
@@ -156,7 +161,7 @@ void FrameCase::prepare(float radians) {
                 positions_ = p;
                 normals_ = n;
             } else if (w.route != "levels_then_mesh_normals") {
-                differs(positions_, normals_, tolerance, 1e-3, "CpuEvaluator's on " + ways_[0].route);
+                differs(positions_, normals_, tolerance, chainNormals, "CpuEvaluator's on " + ways_[0].route);
             } else {
                 for (std::size_t v = 0; v < n.size(); v += 3) {
                     const double length = std::sqrt(double(n[v]) * n[v] + double(n[v + 1]) * n[v + 1] +

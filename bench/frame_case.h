@@ -45,8 +45,9 @@ public:
 
     // One frame at `radians` every way, checked before anything is timed (std::runtime_error if
     // not): TbbEvaluator's frames bitwise CpuEvaluator's, the chain's limit within 1e-5 of the
-    // bounding box diagonal of the factorized one (normals within 1e-3), Vulkan's the same, the
-    // mesh normals of unit length.
+    // bounding box diagonal of the factorized one (normals within 1e-3 doubled per level past
+    // the first: float rounding), Vulkan's within 1e-5 of the diagonal and 1e-3, the mesh normals
+    // of unit length.
     void prepare(float radians);
 
     // CpuEvaluator's limit positions and unit normals of level N at prepare()'s angle, through
