@@ -7,7 +7,8 @@
 Replaces what lies between the two marker lines in the README (BEGIN and END below), so that
 rerunning it after a new bench run replaces the section. Every number written comes from the
 JSON; ratios are OpenSubdiv / quadtri (higher is better for quadtri), each stated like for like:
-threads, table kind and floats a vertex. Standard library only.
+threads, table kind and floats a vertex. The whole frame comes first (the headline: the goal's
+figures, then a row per cage, level and evaluator). Standard library only.
 """
 
 import argparse
