@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/frame_figures.h"
 #include "bench/timing.h"
 
 namespace quadtri::bench {
@@ -118,6 +119,7 @@ struct BenchResult {
     MemcpyFigures memcpyLarge;  // 256 MiB
     std::vector<CaseResult> cases;
     std::vector<LimitCaseResult> limitCases;
+    std::vector<FrameCaseResult> frameCases;
 };
 
 }  // namespace quadtri::bench

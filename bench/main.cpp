@@ -1,7 +1,8 @@
-// quadtri-bench: quadtri against OpenSubdiv on generated tori and a high-valence UV sphere: build time (one thread and
-// all), table bytes, memory and evaluation time per case, checked for agreement first, plus memcpy bandwidth for
+// quadtri-bench: quadtri against OpenSubdiv on generated tori and a high-valence UV sphere: the real-time loop's
+// whole frame (skin, level N's limit positions and normals) on ~10 000-face cages, build time (one thread and all),
+// table bytes, memory and evaluation time per case, checked for agreement first, plus memcpy bandwidth for
 // reference (256 MiB, and per case a copy the size of the evaluation's working set).
-//   quadtri-bench [--quick] [--limit] [--json FILE] [--mesh NAME]
+//   quadtri-bench [--quick] [--limit | --frame] [--json FILE] [--mesh NAME]
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -20,14 +21,17 @@
 
 #include "bench/compare.h"
 #include "bench/figures.h"
+#include "bench/frame_case.h"
 #include "bench/limit_case.h"
 #include "bench/memcpy_bandwidth.h"
 #include "bench/osd_case.h"
+#include "bench/osd_frame_case.h"
 #include "bench/osd_limit_case.h"
 #include "bench/quadtri_case.h"
 #include "bench/report.h"
 #include "bench/sphere.h"
 #include "bench/torus.h"
+#include "tools/obj_io.h"
 #ifdef QUADTRI_BENCH_VULKAN
 #include "bench/vulkan_case.h"
 #include <quadtri/osd/vulkan_context.h>
@@ -55,12 +59,18 @@ struct CaseSpec {
 // rings keep level 3 near a million faces.
 constexpr int kSphereSegments = 2000, kSphereRings = 8;
 
+// The frame cases' cages, about 10 000 faces each: the 100 x 100 quad torus, the 71 x 71 torus
+// split into 10 082 triangles, and the demo's mixed limb (data/mixed_limb.obj, 9 984 faces:
+// quads, a triangulated elbow and end dome, three creases).
+constexpr int kFrameTriTorus = 71;
+const char* const kLimbName = "mixed_limb";
+
 ControlMesh makeMesh(const std::string& name) {
     for (SpherePoles poles : {SpherePoles::TriangleFans, SpherePoles::QuadFans}) {
         ControlMesh sphere = makeUvSphere(kSphereSegments, kSphereRings, poles);
         if (sphere.name == name) return sphere;
     }
-    for (int n : {100, 320})
+    for (int n : {kFrameTriTorus, 100, 320})
         for (TorusFaces faces : {TorusFaces::Quads, TorusFaces::Triangles, TorusFaces::Mixed})
             if (torusName(n, faces) == name) return makeTorus(n, faces);
     throw std::logic_error("no generator for the mesh " + name);
@@ -105,6 +115,19 @@ std::vector<CaseSpec> limitCaseList(bool quick) {
         cases.push_back({torusName(100, TorusFaces::Quads), Scheme::CatmullClark, OsdScheme::Catmark, level});
         cases.push_back({torusName(100, TorusFaces::Triangles), Scheme::Loop, OsdScheme::Loop, level});
         cases.push_back({torusName(100, TorusFaces::Mixed), Scheme::SchaeferWarren, std::nullopt, level});
+    }
+    return cases;
+}
+
+// Frame cases: the quad torus under Catmull-Clark and the triangle torus under Loop on both sides
+// (OpenSubdiv's Catmark and Loop, so that the frames agree), the limb under Schaefer-Warren
+// quadtri alone (OpenSubdiv has no scheme for mixed cages); levels 2-4 (--quick: 2).
+std::vector<CaseSpec> frameCaseList(bool quick) {
+    std::vector<CaseSpec> cases;
+    for (int level = 2; level <= (quick ? 2 : 4); ++level) {
+        cases.push_back({torusName(100, TorusFaces::Quads), Scheme::CatmullClark, OsdScheme::Catmark, level});
+        cases.push_back({torusName(kFrameTriTorus, TorusFaces::Triangles), Scheme::Loop, OsdScheme::Loop, level});
+        cases.push_back({kLimbName, Scheme::SchaeferWarren, std::nullopt, level});
     }
     return cases;
 }
@@ -188,6 +211,66 @@ LimitCaseResult runLimitCase(const ControlMesh& mesh, const CaseSpec& spec, int 
     return result;
 }
 
+// Where the two sides' frames are compared before timing: well into the bend (as the demo).
+constexpr float kFrameCheckRadians = 1.2f;
+
+TopologyDescriptor descriptorOf(const ControlMesh& mesh) {
+    TopologyDescriptor desc;
+    desc.numVertices = mesh.numVertices;
+    desc.numFaces = mesh.numFaces();
+    desc.numVertsPerFace = mesh.faceSizes.data();
+    desc.faceVertIndices = mesh.faceVerts.data();
+    return desc;
+}
+
+// The frame of one cage and level on quadtri's side (every route and evaluator) and, for a pure
+// cage, OpenSubdiv's; both sides' frames at the same bend checked to agree first. `limb` is the
+// mixed limb, read once by the caller; `mesh` the torus otherwise.
+FrameCaseResult runFrameCase(const CaseSpec& spec, const ControlMesh* mesh, const io::ObjMesh* limb, int reps,
+                             VulkanContext* vulkan) {
+    FrameCaseResult result;
+    result.mesh = spec.mesh;
+    result.scheme = schemeName(spec);
+    result.level = spec.level;
+    result.frames = reps;
+    Options options;
+    options.scheme = spec.scheme;
+    std::unique_ptr<FrameCase> qt;
+    if (limb) {
+        result.controlVertices = limb->numVertices();
+        result.faces = limb->numFaces();
+        qt = std::make_unique<FrameCase>(spec.mesh, limb->descriptor(), limb->applyTags(options), limb->positions,
+                                         spec.level, vulkan);
+    } else {
+        result.controlVertices = mesh->numVertices;
+        result.faces = mesh->numFaces();
+        qt = std::make_unique<FrameCase>(spec.mesh, descriptorOf(*mesh), options, mesh->positions, spec.level, vulkan);
+    }
+    qt->prepare(kFrameCheckRadians);
+    result.points = qt->numPoints();
+    result.limitTableBytes = qt->limitTableBytes();
+    result.chainTableBytes = qt->chainTableBytes();
+    std::optional<OsdFrameCase> osd;
+    if (spec.osd) {
+        osd.emplace(*mesh, *spec.osd, spec.level);
+        osd->prepare(kFrameCheckRadians);
+        // The same posed surface: limit points, and normals at them (matched by position).
+        const double tolerance = 1e-5 * qt->diagonal();
+        const std::string where = spec.mesh + " level " + std::to_string(spec.level) + ", bent " +
+                                  std::to_string(kFrameCheckRadians) + " rad: quadtri's and OpenSubdiv's frames ";
+        const MatchResult match = matchPositions(qt->positions(), osd->positions(), tolerance);
+        if (!match.ok) throw std::runtime_error(where + "differ in their limit points (" + match.describe() + ")");
+        const double normalAngle = maxNormalAngle(qt->positions(), qt->normals(), osd->positions(), osd->normals(), tolerance);
+        if (!(normalAngle < 1e-3))
+            throw std::runtime_error(where + "differ in their limit normals by " + std::to_string(normalAngle) + " rad");
+        std::cerr << "  frame agrees with OpenSubdiv: " << match.describe() << ", normals within " << normalAngle
+                  << " rad\n";
+    }
+    result.quadtri = qt->measure(reps);
+    if (osd) result.osd = osd->measure(reps);
+    return result;
+}
+
 std::string utcNow() {
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     std::tm utc{};
@@ -208,28 +291,31 @@ std::string cpuModel() {
 
 int usage(const char* message) {
     if (message) std::cerr << "quadtri-bench: " << message << "\n";
-    std::cerr << "usage: quadtri-bench [--quick] [--limit] [--json FILE] [--mesh NAME]\n"
-                 "  --quick      CI-sized run: 100x100 tori at levels 2-3 (their limit at 2),\n"
+    std::cerr << "usage: quadtri-bench [--quick] [--limit | --frame] [--json FILE] [--mesh NAME]\n"
+                 "  --quick      CI-sized run: 100x100 tori at levels 2-3 (their limit and frames at 2),\n"
                  "               the 2000-segment spheres at level 1, 3 repetitions\n"
                  "  --limit      only the limit cases (limit positions + normals, mesh normals)\n"
+                 "  --frame      only the frame cases (skin + level N's limit positions and normals)\n"
                  "  --json FILE  also write the figures as JSON to FILE\n"
                  "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
-                 "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad),\n"
-                 "               e.g. to profile it\n";
+                 "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad;\n"
+                 "               frames: torus100_quad, torus71_tri, mixed_limb), e.g. to profile it\n";
     return message ? 2 : 0;
 }
 
 int run(int argc, char** argv) {
-    bool quick = false, limitOnly = false;
+    bool quick = false, limitOnly = false, frameOnly = false;
     std::string jsonPath, onlyMesh;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--json") && i + 1 < argc) jsonPath = argv[++i];
         else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) onlyMesh = argv[++i];
         else if (!std::strcmp(argv[i], "--limit")) limitOnly = true;
+        else if (!std::strcmp(argv[i], "--frame")) frameOnly = true;
         else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return usage(nullptr);
         else return usage((std::string("unknown argument ") + argv[i]).c_str());
     }
+    if (limitOnly && frameOnly) return usage("--limit and --frame exclude each other");
     const int reps = quick ? 3 : 5;
 
     BenchResult result;
@@ -256,32 +342,42 @@ int run(int argc, char** argv) {
     VulkanContext* device = nullptr;
 #endif
 
+    auto ofMesh = [&](std::vector<CaseSpec> list) {
+        if (!onlyMesh.empty())
+            list.erase(std::remove_if(list.begin(), list.end(), [&](const CaseSpec& c) { return c.mesh != onlyMesh; }),
+                       list.end());
+        return list;
+    };
+    const std::vector<CaseSpec> frames = ofMesh(limitOnly ? std::vector<CaseSpec>{} : frameCaseList(quick));
+    const std::vector<CaseSpec> cases = ofMesh(limitOnly || frameOnly ? std::vector<CaseSpec>{} : caseList(quick));
+    const std::vector<CaseSpec> limits = ofMesh(frameOnly ? std::vector<CaseSpec>{} : limitCaseList(quick));
+    if (frames.empty() && cases.empty() && limits.empty()) return usage(("no case has the mesh " + onlyMesh).c_str());
+
     std::map<std::string, ControlMesh> meshes;
-    std::vector<CaseSpec> cases = limitOnly ? std::vector<CaseSpec>{} : caseList(quick);
-    if (!onlyMesh.empty()) {
-        cases.erase(std::remove_if(cases.begin(), cases.end(),
-                                   [&](const CaseSpec& c) { return c.mesh != onlyMesh; }),
-                    cases.end());
-        if (cases.empty() && !limitOnly) return usage(("no case has the mesh " + onlyMesh).c_str());
+    auto meshOf = [&](const std::string& name) -> const ControlMesh& {
+        if (!meshes.count(name)) meshes.emplace(name, makeMesh(name));
+        return meshes.at(name);
+    };
+    std::optional<io::ObjMesh> limb;
+    for (size_t i = 0; i < frames.size(); ++i) {
+        const CaseSpec& spec = frames[i];
+        std::cerr << "[frame " << i + 1 << "/" << frames.size() << "] " << spec.mesh << " level " << spec.level << "\n";
+        if (spec.mesh == kLimbName && !limb) limb = io::readObj(std::string(QUADTRI_BENCH_DATA_DIR) + "/mixed_limb.obj");
+        const bool isLimb = spec.mesh == kLimbName;
+        result.frameCases.push_back(
+            runFrameCase(spec, isLimb ? nullptr : &meshOf(spec.mesh), isLimb ? &*limb : nullptr, reps, device));
     }
     for (size_t i = 0; i < cases.size(); ++i) {
         const CaseSpec& spec = cases[i];
-        if (!meshes.count(spec.mesh)) meshes.emplace(spec.mesh, makeMesh(spec.mesh));
-        const ControlMesh& mesh = meshes.at(spec.mesh);
+        const ControlMesh& mesh = meshOf(spec.mesh);
         std::cerr << "[" << i + 1 << "/" << cases.size() << "] " << mesh.name << " level " << spec.level << "\n";
         result.cases.push_back(runCase(mesh, spec, reps, result.threads, device));
     }
-
-    std::vector<CaseSpec> limits = limitCaseList(quick);
-    if (!onlyMesh.empty())
-        limits.erase(std::remove_if(limits.begin(), limits.end(), [&](const CaseSpec& c) { return c.mesh != onlyMesh; }),
-                     limits.end());
     for (size_t i = 0; i < limits.size(); ++i) {
         const CaseSpec& spec = limits[i];
-        if (!meshes.count(spec.mesh)) meshes.emplace(spec.mesh, makeMesh(spec.mesh));
         std::cerr << "[limit " << i + 1 << "/" << limits.size() << "] " << spec.mesh << " level " << spec.level << "\n";
         try {
-            result.limitCases.push_back(runLimitCase(meshes.at(spec.mesh), spec, reps, device));
+            result.limitCases.push_back(runLimitCase(meshOf(spec.mesh), spec, reps, device));
         } catch (const std::logic_error& e) {  // a scheme without limit masks for this mesh yet
             std::cerr << "  skipped: " << e.what() << "\n";
         } catch (const MemoryBudgetError& e) {  // a level over the budget

@@ -74,24 +74,36 @@ struct OsdLimitCase::State {
     }
 
     template <class Evaluator>
-    void eval() {
+    void eval(const float* control) {
         const LimitTable& tb = *table;
         const Osd::BufferDescriptor xyz(0, 3, 3);
-        Evaluator::EvalStencils(mesh.positions.data(), xyz, position.data(), xyz, du.data(), xyz, dv.data(), xyz,
+        Evaluator::EvalStencils(control, xyz, position.data(), xyz, du.data(), xyz, dv.data(), xyz,
                                 tb.GetSizes().data(), tb.GetOffsets().data(), tb.GetControlIndices().data(),
                                 tb.GetWeights().data(), tb.GetDuWeights().data(), tb.GetDvWeights().data(), 0,
                                 tb.GetNumStencils());
-        normalize();
     }
 
     // Far's templates, compiled into the bench over 3-float vertices: one pass over the table
     // for the positions, one for each derivative.
-    void evalFar() {
-        const VertexView<3, const float> control{mesh.positions.data()};
+    void evalFar(const float* controlPositions) {
+        const VertexView<3, const float> control{controlPositions};
         VertexView<3, float> p{position.data()}, u{du.data()}, v{dv.data()};
         table->UpdateValues(control, p);
         table->UpdateDerivs(control, u, v);
+    }
+
+    // One evaluation of the rest cage with its normals: the limit case's figure.
+    void evalRest(OsdLimitEvaluator evaluator) {
+        evalDerivatives(mesh.positions.data(), evaluator);
         normalize();
+    }
+
+    void evalDerivatives(const float* control, OsdLimitEvaluator evaluator) {
+        switch (evaluator) {
+        case OsdLimitEvaluator::Cpu: eval<Osd::CpuEvaluator>(control); break;
+        case OsdLimitEvaluator::Omp: eval<Osd::OmpEvaluator>(control); break;
+        case OsdLimitEvaluator::Far: evalFar(control); break;
+        }
     }
 
     // normal = normalize(du x dv) per point.
@@ -130,9 +142,9 @@ void OsdLimitCase::prepare() {
     const std::size_t n = std::size_t(st.table->GetNumStencils());
     st.position.assign(3 * n, 0.0f);
     st.du = st.dv = st.normal = st.position;
-    st.evalFar();
+    st.evalRest(OsdLimitEvaluator::Far);
     const std::vector<float> farPosition = st.position, farNormal = st.normal;
-    st.eval<Osd::CpuEvaluator>();
+    st.evalRest(OsdLimitEvaluator::Cpu);
     if (farPosition != st.position || farNormal != st.normal)
         throw std::runtime_error(st.mesh.name + " level " + std::to_string(st.level) +
                                  ": Far's UpdateValues and UpdateDerivs differ from Osd::CpuEvaluator");
@@ -180,12 +192,18 @@ const std::vector<float>& OsdLimitCase::positions() const { return s_->position;
 const std::vector<float>& OsdLimitCase::normals() const { return s_->normal; }
 int OsdLimitCase::numPoints() const { return s_->table->GetNumStencils(); }
 
+void OsdLimitCase::evalDerivatives(const float* control, OsdLimitEvaluator evaluator) {
+    s_->evalDerivatives(control, evaluator);
+}
+
+void OsdLimitCase::evalNormals() { s_->normalize(); }
+
 OsdLimitFigures OsdLimitCase::measure(int reps) {
     State& st = *s_;
     OsdLimitFigures f;
-    f.evalCpuMs = timeMs(reps, [&st] { st.eval<Osd::CpuEvaluator>(); });
-    f.evalOmpMs = timeMs(reps, [&st] { st.eval<Osd::OmpEvaluator>(); });
-    f.evalFarMs = timeMs(reps, [&st] { st.evalFar(); });
+    f.evalCpuMs = timeMs(reps, [&st] { st.evalRest(OsdLimitEvaluator::Cpu); });
+    f.evalOmpMs = timeMs(reps, [&st] { st.evalRest(OsdLimitEvaluator::Omp); });
+    f.evalFarMs = timeMs(reps, [&st] { st.evalRest(OsdLimitEvaluator::Far); });
     f.tableBytes = st.memory.tableBytes;
     f.memory = st.memory;
     return f;

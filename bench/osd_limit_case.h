@@ -14,6 +14,10 @@
 
 namespace quadtri::bench {
 
+// OpenSubdiv's ways of applying the limit table: Osd::CpuEvaluator, Osd::OmpEvaluator, and Far's
+// UpdateValues + UpdateDerivs templates compiled into the bench.
+enum class OsdLimitEvaluator { Cpu, Omp, Far };
+
 class OsdLimitCase {
 public:
     // `mesh` a bench torus (quads under Catmark or triangles under Loop): each quad (i, j) gives the
@@ -32,6 +36,12 @@ public:
     int numPoints() const;
 
     OsdLimitFigures measure(int reps);
+
+    // For the frame cases (bench/osd_frame_case.h), after prepare(): the limit positions, du and
+    // dv of a posed cage (3 floats per control vertex, the mesh's vertex order) by `evaluator`,
+    // then normals() = normalize(du x dv) from them, as two calls so that each is timed.
+    void evalDerivatives(const float* control, OsdLimitEvaluator evaluator);
+    void evalNormals();
 
 private:
     struct State;

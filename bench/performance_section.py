@@ -7,7 +7,8 @@
 Replaces what lies between the two marker lines in the README (BEGIN and END below), so that
 rerunning it after a new bench run replaces the section. Every number written comes from the
 JSON; ratios are OpenSubdiv / quadtri (higher is better for quadtri), each stated like for like:
-threads, table kind and floats a vertex. Standard library only.
+threads, table kind and floats a vertex. The whole frame comes first (the headline: the goal's
+figures, then a row per cage, level and evaluator). Standard library only.
 """
 
 import argparse
@@ -263,6 +264,95 @@ def limit_summary(r):
             f" quadtri's factorized limit tables are {tables}x the bytes of OpenSubdiv's `LimitStencilTable`."]
 
 
+MESH_NORMALS = "levels_then_mesh_normals"
+ROUTES = {"factorized_limit": "factorized limit", "levels_then_limit": "per-level + limit",
+          "levels_then_mesh_normals": "per-level + mesh normals", "limit_stencils": "LimitStencilTable"}
+OSD_EVALUATORS = {"cpu": "CpuEvaluator", "omp": "OmpEvaluator", "far": "Far UpdateValues + UpdateDerivs"}
+
+
+def fastest_frame(timings, evaluators, mesh_normals=False):
+    """The fastest of the frames run on one of `evaluators`: limit frames, or the mesh-normal frame."""
+    ways = [t for t in timings or [] if t["evaluator"] in evaluators and (t["route"] == MESH_NORMALS) == mesh_normals]
+    return min(ways, key=lambda t: t["frame_ms"]["median"]) if ways else None
+
+
+def osd_frame(c, evaluator):
+    """OpenSubdiv's frame like for like: serial against its serial ways, the rest against any."""
+    return fastest_frame(c["osd"], SERIAL if evaluator == "cpu" else ("cpu", "omp", "far"))
+
+
+def fps(t):
+    """frames per second of the median frame, and over the fastest and slowest frames."""
+    f = t["frame_ms"]
+    return f"{1000 / f['median']:.0f} ({1000 / f['max']:.0f}–{1000 / f['min']:.0f})"
+
+
+def frame_table(r):
+    rows = ["| cage | scheme | L | faces | points | evaluator | quadtri frame ms (route) | quadtri fps"
+            " | deform / evaluate / normals ms | OSD frame ms (evaluator) | OSD fps | OSD / quadtri"
+            " | quadtri mesh-normal frame ms | fps |",
+            "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for c in r.get("frame_cases", []):
+        for evaluator in ("cpu", "tbb", "vulkan"):
+            q = fastest_frame(c["quadtri"], (evaluator,))
+            if not q:
+                continue
+            o = osd_frame(c, evaluator)
+            osd_cols = (f"{timing(o['frame_ms'])} ({OSD_EVALUATORS[o['evaluator']]}) | {fps(o)} | "
+                        f"{ratio(o['frame_ms']['median'], q['frame_ms']['median'])}") if o else "– | – | –"
+            m = fastest_frame(c["quadtri"], (evaluator,), mesh_normals=True)
+            mesh_cols = f"{timing(m['frame_ms'])} | {fps(m)}" if m else "– | –"
+            phases = " / ".join(fmt(q[k]["median"]) for k in ("deform_ms", "evaluate_ms", "normals_ms"))
+            name = {"cpu": "CpuEvaluator", "tbb": f"TbbEvaluator, {r['threads']}t", "vulkan": "Vulkan"}[evaluator]
+            rows.append(f"| {case_label(c)} | {c['faces']} | {c['points']} | {name} | {timing(q['frame_ms'])}"
+                        f" ({ROUTES[q['route']]}) | {fps(q)} | {phases} | {osd_cols} | {mesh_cols} |")
+    return rows
+
+
+def frame_summary(r):
+    """The headline: the issue's goal (the mixed cage at level 3 on all threads, >= 4x OpenSubdiv's
+    frame on the pure cages) and the ratio ranges."""
+    cases = r.get("frame_cases", [])
+    if not cases:
+        return []
+    n = r["threads"]
+    lines = ["**The whole frame** (the headline: what an engine pays per frame for a skinned, subdivided cage).",
+             ""]
+    mixed = [c for c in cases if not c["osd"]]
+    pure = [c for c in cases if c["osd"]]
+    goal_level = 3 if any(c["level"] == 3 for c in cases) else max(c["level"] for c in cases)
+    for c in (c for c in mixed if c["level"] == goal_level):
+        t = fastest_frame(c["quadtri"], ("tbb",))
+        lines.append(f"- Goal, a 10 000-face mixed cage at level 3 with limit normals at >= 120 fps on 2 cores with"
+                     f" oneTBB: {c['mesh']} ({c['faces']} faces) at level {c['level']} on {n} threads,"
+                     f" {timing(t['frame_ms'])} ms a frame, **{fps(t)} fps** ({ROUTES[t['route']]});"
+                     f" one thread {fps(fastest_frame(c['quadtri'], ('cpu',)))} fps.")
+    at = [c for c in pure if c["level"] == goal_level]
+    if at:
+        serial = span([osd_frame(c, "cpu")["frame_ms"]["median"] / fastest_frame(c["quadtri"], ("cpu",))["frame_ms"]["median"]
+                       for c in at])
+        threaded = span([osd_frame(c, "tbb")["frame_ms"]["median"] / fastest_frame(c["quadtri"], ("tbb",))["frame_ms"]["median"]
+                         for c in at])
+        names = ", ".join(sorted({c["mesh"] for c in at}))
+        lines.append(f"- Goal, >= 4x OpenSubdiv's frame: OpenSubdiv has no scheme for mixed cages, so the ratio is on"
+                     f" the pure cages ({names}: Catmark and Loop on both sides) at level {goal_level}:"
+                     f" **{threaded}x** its best frame on any evaluator with quadtri on {n} threads,"
+                     f" {serial}x its best serial frame with quadtri on one thread.")
+    if pure:
+        serial = span([osd_frame(c, "cpu")["frame_ms"]["median"] / fastest_frame(c["quadtri"], ("cpu",))["frame_ms"]["median"]
+                       for c in pure])
+        threaded = span([osd_frame(c, "tbb")["frame_ms"]["median"] / fastest_frame(c["quadtri"], ("tbb",))["frame_ms"]["median"]
+                         for c in pure])
+        lines.append(f"- Every level run ({', '.join(str(l) for l in sorted({c['level'] for c in pure}))}): serial"
+                     f" {serial}x, {n} threads {threaded}x OpenSubdiv's frame.")
+    lines += ["", "Frames per second are 1000 / the median frame (in brackets: of the slowest and the fastest frame);"
+              " each evaluator's faster route of the two limit routes; OpenSubdiv's fastest evaluator like for like"
+              " (one thread: `Osd::CpuEvaluator` or Far's templates; threads and Vulkan: any, `Osd::OmpEvaluator`"
+              " included); the mesh-normal frame (quadtri alone) evaluates the per-level tables to level N and"
+              " its mesh normals:", ""]
+    return lines + frame_table(r)
+
+
 def section(r, note):
     m = r["memcpy"]
     lines = [
@@ -277,8 +367,11 @@ def section(r, note):
         f" {m['gbps_all']:.1f} GB/s on {r['threads']}.",
         "",
     ]
+    lines += frame_summary(r)
+    if r.get("frame_cases"):
+        lines += [""]
     lines += summary(r)
-    if not r["cases"]:  # a --limit run
+    if not r["cases"]:  # a --limit or --frame run
         lines += ["No refinement cases in this run."]
     else:
         lines += case_tables(r)

@@ -14,7 +14,9 @@ if(NOT text1 STREQUAL text2)
   message(FATAL_ERROR "a second run of performance_section.py changed ${OUT}")
 endif()
 foreach(expected "<!-- performance-figures:begin" "<!-- performance-figures:end -->" "with `quadtri-bench --quick --json"
-                 "| torus100_quad | stam-loop/catmark | 2 |")
+                 "| torus100_quad | stam-loop/catmark | 2 |" "**The whole frame**"
+                 "| torus100_quad | catmull-clark/catmark | 2 | 10000 | 160000 | TbbEvaluator"
+                 "| mixed_limb | schaefer-warren | 2 | 9984 |")
   string(FIND "${text1}" "${expected}" at)
   if(at LESS 0)
     message(FATAL_ERROR "the written section lacks '${expected}'")

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -182,6 +184,76 @@ void printCasesMarkdown(std::ostream& out, const BenchResult& r) {
            "whose source and destination together are that size.\n";
 }
 
+void writeFrameTimingsJson(std::ostream& f, const std::vector<FrameTiming>& timings) {
+    f << "[";
+    for (std::size_t i = 0; i < timings.size(); ++i) {
+        const FrameTiming& t = timings[i];
+        f << (i ? "," : "") << "\n       {\"evaluator\": " << jsonString(t.evaluator) << ", \"route\": " << jsonString(t.route)
+          << ", \"fps\": " << number(1000.0 / t.frameMs.median) << ", \"frame_ms\": " << json(t.frameMs)
+          << ",\n        \"deform_ms\": " << json(t.deformMs) << ", \"evaluate_ms\": " << json(t.evaluateMs)
+          << ", \"normals_ms\": " << json(t.normalsMs) << "}";
+    }
+    f << "]";
+}
+
+void writeFrameCaseJson(std::ostream& f, const FrameCaseResult& c) {
+    f << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme) << ", \"level\": " << c.level
+      << ", \"control_vertices\": " << c.controlVertices << ", \"faces\": " << c.faces << ", \"points\": " << c.points
+      << ", \"frames\": " << c.frames << ",\n     \"limit_table_bytes\": " << json(c.limitTableBytes)
+      << ", \"chain_table_bytes\": " << c.chainTableBytes << ",\n     \"quadtri\": ";
+    writeFrameTimingsJson(f, c.quadtri);
+    f << ",\n     \"osd\": ";
+    if (c.osd.empty()) f << "null";
+    else writeFrameTimingsJson(f, c.osd);
+    f << "}";
+}
+
+// The fastest of `timings` on one of `evaluators` whose route is a limit route (or, with
+// meshNormals, the mesh-normal route); null if none.
+const FrameTiming* fastestFrame(const std::vector<FrameTiming>& timings, std::initializer_list<const char*> evaluators,
+                                bool meshNormals = false) {
+    const FrameTiming* best = nullptr;
+    for (const FrameTiming& t : timings) {
+        if ((t.route == "levels_then_mesh_normals") != meshNormals) continue;
+        if (std::none_of(evaluators.begin(), evaluators.end(), [&](const char* e) { return t.evaluator == e; })) continue;
+        if (!best || t.frameMs.median < best->frameMs.median) best = &t;
+    }
+    return best;
+}
+
+std::string frameCell(const FrameTiming* t, bool withRoute = true) {
+    if (!t) return "– | –";
+    return ms(t->frameMs.median) + (withRoute ? " (" + t->route + ")" : "") + " | " +
+           number(1000.0 / t->frameMs.median, "%.1f");
+}
+
+// Per cage, level and quadtri evaluator: its fastest limit frame, OpenSubdiv's fastest like for
+// like (serial against its serial ways, threaded and Vulkan against any), the ratio, and the
+// mesh-normal frame.
+void printFramesMarkdown(std::ostream& out, const std::vector<FrameCaseResult>& cases) {
+    if (cases.empty()) return;
+    out << "The whole frame: the cage posed by the two-bone skin, then level N's limit positions + unit normals"
+           " (qt: its faster table route; OSD: Far::LimitStencilTable with du, dv, then normalize(du x dv), on the"
+           " same posed cage), and qt's refined positions + mesh normals (per-level tables, then EvalMeshNormals):\n\n"
+        << "| mesh | scheme | L | points | evaluator | qt limit frame ms (route) | fps | OSD frame ms (evaluator) | fps"
+           " | OSD / qt | qt mesh-normal frame ms | fps |\n"
+        << "|---|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const FrameCaseResult& c : cases)
+        for (const char* evaluator : {"cpu", "tbb", "vulkan"}) {
+            const FrameTiming* q = fastestFrame(c.quadtri, {evaluator});
+            if (!q) continue;
+            const bool serial = !std::strcmp(evaluator, "cpu");
+            const FrameTiming* o = serial ? fastestFrame(c.osd, {"cpu", "far"}) : fastestFrame(c.osd, {"cpu", "omp", "far"});
+            out << "| " << c.mesh << " | " << c.scheme << " | " << c.level << " | " << c.points << " | " << evaluator
+                << " | " << frameCell(q) << " | ";
+            if (o) out << ms(o->frameMs.median) << " (" << o->evaluator << ") | " << number(1000.0 / o->frameMs.median, "%.1f")
+                       << " | " << ratio(o->frameMs.median, q->frameMs.median);
+            else out << "– | – | –";
+            out << " | " << frameCell(fastestFrame(c.quadtri, {evaluator}, true), false) << " |\n";
+        }
+    out << "\n";
+}
+
 }  // namespace
 
 void writeJson(const std::string& path, const BenchResult& r) {
@@ -196,6 +268,11 @@ void writeJson(const std::string& path, const BenchResult& r) {
         f << (i ? ",\n" : "\n");
         writeCaseJson(f, r.cases[i]);
     }
+    f << "\n  ],\n  \"frame_cases\": [";
+    for (std::size_t i = 0; i < r.frameCases.size(); ++i) {
+        f << (i ? ",\n" : "\n");
+        writeFrameCaseJson(f, r.frameCases[i]);
+    }
     f << "\n  ],\n  \"limit_cases\": [";
     for (std::size_t i = 0; i < r.limitCases.size(); ++i) {
         f << (i ? ",\n" : "\n");
@@ -206,6 +283,7 @@ void writeJson(const std::string& path, const BenchResult& r) {
 }
 
 void printMarkdown(std::ostream& out, const BenchResult& r) {
+    printFramesMarkdown(out, r.frameCases);
     if (!r.cases.empty()) printCasesMarkdown(out, r);
     out << "\nmemcpy (" << (r.memcpyLarge.bytes >> 20) << " MiB, bytes read + written): "
         << number(r.memcpyLarge.gbps1, "%.1f") << " GB/s with 1 thread, " << number(r.memcpyLarge.gbpsAll, "%.1f")

@@ -13,8 +13,9 @@ namespace quadtri::bench {
 // repetitions. Throws std::runtime_error if the file cannot be written.
 void writeJson(const std::string& path, const BenchResult& result);
 
-// One row per case with the main figures and the like-for-like OSD/quadtri ratios, then the
-// memcpy line and the limit cases.
+// The frame cases first (per cage, level and evaluator: the frame, its fps and the like-for-like
+// OSD/quadtri ratio), then one row per case with the main figures and the like-for-like
+// OSD/quadtri ratios, the memcpy line and the limit cases.
 void printMarkdown(std::ostream& out, const BenchResult& result);
 
 }  // namespace quadtri::bench
