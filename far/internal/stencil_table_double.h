@@ -34,5 +34,10 @@ std::size_t bytesOf(const StencilTableD& table);
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner,
                               std::size_t maxBytes = ~std::size_t(0));
 
+// The same composition stored as float: bitwise toFloatTable(composeStencils(outer, inner,
+// maxBytes)), refused at the same point, without the double result (far/compose_stencils.cpp).
+StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner,
+                                    std::size_t maxBytes = ~std::size_t(0));
+
 }  // namespace v0
 }  // namespace quadtri
