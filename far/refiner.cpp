@@ -120,16 +120,21 @@ private:
 };
 
 // The per-level tables a composition reads: table(l) makes level l's over level l-1 in double,
-// bytes(l) is what that takes, reserved before it is made.
+// outer(l) is level l's table as the composition reads it (the stored float table, read as its
+// double copy would be, where there is one), and bytes(l) is what that double copy takes,
+// reserved before level l is composed whether or not it is made, so that what the budget
+// refuses does not depend on which way the table is read.
 struct PositionLevels {
     const Refiner& refiner;
     StencilTableD table(int l) const { return toDoubleTable(refiner.levelStencils(l)); }
+    const StencilTable& outer(int l) const { return refiner.levelStencils(l); }
     std::size_t bytes(int l) const { return doubleBytes(refiner.levelStencils(l)); }
 };
 
 struct ChannelLevels {
     const FVarChannelRefinement& channel;
     StencilTableD table(int l) const { return toDoubleTable(channel.levelStencils(l)); }
+    const StencilTable& outer(int l) const { return channel.levelStencils(l); }
     std::size_t bytes(int l) const { return doubleBytes(channel.levelStencils(l)); }
 };
 
@@ -141,6 +146,7 @@ struct VaryingLevels {
         return numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit());
     }
     StencilTableD table(int l) const { return buildVaryingStencils(refiner.level(l - 1), numbering(l)); }
+    StencilTableD outer(int l) const { return table(l); }
     std::size_t bytes(int l) const { return varyingStencilBytes(refiner.level(l - 1), numbering(l)); }
 };
 
@@ -151,7 +157,7 @@ StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels&
     StencilTableD composed = levels.table(1);
     for (int l = 2; l <= L; ++l) {
         budget.reserve(levels.bytes(l));
-        const StencilTableD outer = levels.table(l);
+        const auto& outer = levels.outer(l);  // a reference, or a table kept for this step
         try {
             StencilTableD next = composeStencils(outer, composed, budget.left());
             budget.release(levels.bytes(l) + bytesOf(composed));
@@ -188,7 +194,7 @@ StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const L
     budget.reserve(levels.bytes(L));
     StencilTable composed;
     try {
-        composed = composeStencilsToFloat(levels.table(L), inner, budget.left());
+        composed = composeStencilsToFloat(levels.outer(L), inner, budget.left());
     } catch (const std::length_error&) {
         throw budget.refuse(budget.budget() + 1);
     }

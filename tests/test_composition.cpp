@@ -135,7 +135,12 @@ void checkRefiner(const Refiner& refiner, int maxLevel, const std::string& name)
     for (int L = 1; L <= maxLevel; ++L) {
         const std::string where = name + " level " + std::to_string(L);
         const StencilTableD want = referenceChain(levels, L);
-        if (L >= 2) expectSame(composeStencils(levels[std::size_t(L) - 1], referenceChain(levels, L - 1)), want, where);
+        if (L >= 2) {
+            const StencilTableD inner = referenceChain(levels, L - 1);
+            expectSame(composeStencils(levels[std::size_t(L) - 1], inner), want, where);
+            expectSame(composeStencils(refiner.levelStencils(L), inner), want, where + " from the float table");
+            expectSame(composeStencilsToFloat(refiner.levelStencils(L), inner), toFloatTable(want), where + " to float");
+        }
         expectSame(refiner.factorizedStencils(L), toFloatTable(want), where + " factorized");
     }
 }

@@ -1,9 +1,9 @@
 // One composed stencil at a time: weights summed in double per source vertex through a dense
 // slot array (a slot per source, -1 while untouched) and the list of sources touched, in the
-// order first touched. Every add is O(1) and free of data-dependent branches, whatever the
-// stencil's size; composed stencils span a few dozen sources of a local neighbourhood, so the
-// slots they touch stay in cache. Used by the composition of tables only (far/compose_stencils.cpp); the per-level build
-// keeps its own accumulator (sparse_accumulator.h).
+// order first touched. Every add is O(1) whatever the stencil's size; composed stencils span a
+// few dozen sources of a local neighbourhood, so the slots they touch stay in cache. Used by the
+// composition of tables only (far/compose_stencils.cpp); the per-level build keeps its own
+// accumulator (sparse_accumulator.h).
 #pragma once
 
 #include <vector>
@@ -15,12 +15,19 @@ class ScatterRow {
 public:
     explicit ScatterRow(int numSources) : slot_(numSources, -1), indices_(64), weights_(64) {}
 
+    // Room for `more` adds past size(): addScaled itself never checks.
+    void reserve(int more) {
+        if (size_ + more <= int(indices_.size())) return;
+        const std::size_t grown = 2 * (std::size_t(size_) + std::size_t(more));
+        indices_.resize(grown);
+        weights_.resize(grown);
+    }
+
     // Adds scale * weights[m] to the sum of sources[m], m < n, in that order. A source seen
     // before gets its term added to its sum; a new one starts its sum at the term itself (not
     // 0 + term, which would turn -0.0 into +0.0). Raw pointers in locals: the stores cannot
-    // alias the row's own members, so the loop keeps everything in registers.
+    // alias the row's own members.
     void addScaled(const int* sources, const double* weights, int n, double scale) {
-        reserve(n);
         int* slot = slot_.data();
         int* indices = indices_.data();
         double* sums = weights_.data();
@@ -28,14 +35,14 @@ public:
         for (int m = 0; m < n; ++m) {
             const int source = sources[m];
             const double term = scale * weights[m];
-            const int s = slot[source];
-            const bool fresh = s < 0;
-            const int at = fresh ? size : s;
-            slot[source] = at;
-            indices[at] = source;
-            const double sum = sums[at] + term;
-            sums[at] = fresh ? term : sum;
-            size += fresh;
+            const int at = slot[source];
+            if (at < 0) {
+                slot[source] = size;
+                indices[size] = source;
+                sums[size++] = term;
+            } else {
+                sums[at] += term;
+            }
         }
         size_ = size;
     }
@@ -55,14 +62,6 @@ private:
     std::vector<int> indices_;
     std::vector<double> weights_;
     int size_ = 0;
-
-    // Room for `more` entries past size_.
-    void reserve(int more) {
-        if (size_ + more <= int(indices_.size())) return;
-        const std::size_t grown = 2 * (std::size_t(size_) + std::size_t(more));
-        indices_.resize(grown);
-        weights_.resize(grown);
-    }
 };
 
 }  // namespace v0
