@@ -33,6 +33,12 @@ public:
 
 private:
     std::unique_ptr<Refiner> build() const;
+    // build() and the last level's factorized table, as OpenSubdiv's factorized factory builds it.
+    struct FactorizedBuild {
+        std::unique_ptr<Refiner> refiner;
+        StencilTable table;
+    };
+    FactorizedBuild buildFactorized() const;
     template <class Evaluator>
     void eval(std::vector<std::vector<float>>& levels, int width);
 
@@ -44,6 +50,7 @@ private:
     // padded_: the same at 4 floats a vertex (the fourth 0).
     std::vector<std::vector<float>> serial_, threaded_, padded_;
     MemoryFigures memory_;
+    bool factorizedFits_ = false;  // whether the memory budget let prepare() build the factorized table
 };
 
 }  // namespace quadtri::bench
