@@ -2,7 +2,17 @@
 // table's sources, in double, one stencil at a time through a dense scatter row. The outer table
 // is read as it is stored (a float table's weights widen to double exactly), and the last
 // composition of a factorized table can go straight to the stored float table.
+//
+// Stencils are composed in waves of parts on oneTBB's threads, each part a run of consecutive
+// stencils into buffers reused from wave to wave; the parts are then appended in stencil order,
+// on one thread, which also interns the float weights: the table is the same on any number of
+// threads.
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <vector>
 
@@ -17,6 +27,9 @@ namespace {
 
 // Bytes of the double result: an index and a weight per entry, a size and an offset per stencil.
 constexpr std::size_t kEntryBytes = sizeof(int) + sizeof(double), kStencilBytes = 2 * sizeof(int);
+// Stencils per part, and parts per thread in a wave: enough to balance, few enough that a wave's
+// buffers stay a small fraction of the result.
+constexpr int kPartStencils = 2048, kPartsPerThread = 4;
 
 // The outer table's stencil i: entries [begin(i), end(i)), entry k's parent and weight.
 struct DoubleOuter {
@@ -44,19 +57,12 @@ std::size_t entryLimit(int n, std::size_t maxBytes) {
     return std::min<std::size_t>((maxBytes - perStencil) / kEntryBytes, (1u << 31) - 1);
 }
 
-// Entries to reserve for the result: at least its largest inner stencil per outer stencil (nearly
-// all of it a level or two down, where a vertex point's own parent's stencil covers the others),
-// and an eighth more, so that the arrays are seldom grown and copied, within `limit`.
-template <class Outer>
-std::size_t expectedEntries(const Outer& outer, const StencilTableD& inner, std::size_t limit) {
-    std::size_t atLeast = 0;
-    const int* parents = outer.parents();
-    for (int i = 0; i < outer.numStencils(); ++i) {
-        int largest = 0;
-        for (int k = outer.begin(i); k < outer.end(i); ++k) largest = std::max(largest, inner.sizes[parents[k]]);
-        atLeast += std::size_t(largest);
-    }
-    return std::min(limit, atLeast + atLeast / 8);
+// Entries to reserve for the result: the inner table's entries per stencil, a quarter more (a
+// composed stencil grows by a tenth to a quarter a level once past the first levels), within
+// `limit`. Past it the arrays grow by half.
+std::size_t expectedEntries(int n, const StencilTableD& inner, std::size_t limit) {
+    const double perStencil = inner.sizes.empty() ? 0.0 : double(inner.indices.size()) / double(inner.sizes.size());
+    return std::min<std::size_t>(limit, std::size_t(1.25 * perStencil * n) + 16);
 }
 
 // Stencil i of outer ∘ inner into `row`: each outer entry's inner stencil, scaled by its weight,
@@ -75,11 +81,56 @@ void composeOne(const Outer& outer, const StencilTableD& inner, int i, ScatterRo
     }
 }
 
+// A run of composed stencils: their sizes, and their entries back to back, the weights as the
+// result stores them (double, or rounded to float).
+template <class Weight>
+struct Part {
+    std::vector<int> sizes;
+    std::vector<int> indices;
+    std::vector<Weight> weights;
+};
+
 // Grows `v` to hold `needed` (half as much again), never past `limit` elements, so that a
 // refusal comes before the allocation that would pass the budget.
 template <class V>
 void reserveFor(V& v, std::size_t needed, std::size_t limit) {
     if (needed > v.capacity()) v.reserve(std::min(limit, needed + needed / 2));
+}
+
+// Composes every stencil of outer ∘ inner into parts and hands each part, in stencil order, to
+// append(part). Throws std::length_error once the entries composed pass maxEntries.
+template <class Weight, class Outer, class Append>
+void composeParts(const Outer& outer, const StencilTableD& inner, std::size_t maxEntries, Append append) {
+    const int n = outer.numStencils();
+    const int numParts = (n + kPartStencils - 1) / kPartStencils;
+    const int wave = std::max(1, std::min(numParts, kPartsPerThread * tbb::this_task_arena::max_concurrency()));
+    std::vector<Part<Weight>> parts(static_cast<std::size_t>(wave));
+    tbb::enumerable_thread_specific<ScatterRow> rows([&] { return ScatterRow(inner.numSourceVertices); });
+    std::atomic<std::size_t> entries{0};  // composed so far, over every part of every wave
+    for (int first = 0; first < numParts; first += wave) {
+        const int count = std::min(wave, numParts - first);
+        tbb::parallel_for(0, count, [&](int p) {
+            Part<Weight>& part = parts[std::size_t(p)];
+            part.sizes.clear();
+            part.indices.clear();
+            part.weights.clear();
+            ScatterRow& row = rows.local();
+            const int begin = (first + p) * kPartStencils, end = std::min(n, begin + kPartStencils);
+            for (int i = begin; i < end; ++i) {
+                composeOne(outer, inner, i, row);
+                const int size = row.size();
+                if (entries.fetch_add(std::size_t(size)) + std::size_t(size) > maxEntries) {
+                    row.clear();
+                    throw std::length_error("stencil table over its memory budget");
+                }
+                part.sizes.push_back(size);
+                part.indices.insert(part.indices.end(), row.indices(), row.indices() + size);
+                part.weights.insert(part.weights.end(), row.weights(), row.weights() + size);
+                row.clear();
+            }
+        });
+        for (int p = 0; p < count; ++p) append(parts[std::size_t(p)]);
+    }
 }
 
 template <class Outer>
@@ -90,22 +141,20 @@ StencilTableD composeDouble(const Outer& outer, const StencilTableD& inner, std:
     const std::size_t maxEntries = entryLimit(n, maxBytes);
     result.sizes.reserve(n);
     result.offsets.reserve(n);
-    const std::size_t expected = expectedEntries(outer, inner, maxEntries);
+    const std::size_t expected = expectedEntries(n, inner, maxEntries);
     result.indices.reserve(expected);
     result.weights.reserve(expected);
-    ScatterRow row(inner.numSourceVertices);
-    for (int i = 0; i < n; ++i) {
-        composeOne(outer, inner, i, row);
-        const std::size_t at = result.indices.size(), needed = at + std::size_t(row.size());
-        if (needed > maxEntries) throw std::length_error("stencil table over its memory budget");
+    composeParts<double>(outer, inner, maxEntries, [&](const Part<double>& part) {
+        const std::size_t needed = result.indices.size() + part.indices.size();
         reserveFor(result.indices, needed, maxEntries);
         reserveFor(result.weights, needed, maxEntries);
-        result.offsets.push_back(int(at));
-        result.sizes.push_back(row.size());
-        result.indices.insert(result.indices.end(), row.indices(), row.indices() + row.size());
-        result.weights.insert(result.weights.end(), row.weights(), row.weights() + row.size());
-        row.clear();
-    }
+        for (int size : part.sizes) {
+            result.offsets.push_back(result.offsets.empty() ? 0 : result.offsets.back() + result.sizes.back());
+            result.sizes.push_back(size);
+        }
+        result.indices.insert(result.indices.end(), part.indices.begin(), part.indices.end());
+        result.weights.insert(result.weights.end(), part.weights.begin(), part.weights.end());
+    });
     return result;
 }
 
@@ -117,22 +166,18 @@ StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::s
     const std::size_t maxEntries = entryLimit(n, maxBytes);
     result.offsets.reserve(std::size_t(n) + 1);
     result.weightOffsets.reserve(n);
-    result.indices.reserve(expectedEntries(outer, inner, maxEntries));
-    ScatterRow row(inner.numSourceVertices);
+    result.indices.reserve(expectedEntries(n, inner, maxEntries));
     WeightPool pool;
-    std::vector<float> rounded;  // one stencil's weights, reused
-    for (int i = 0; i < n; ++i) {
-        composeOne(outer, inner, i, row);
-        const int size = row.size();
-        const std::size_t needed = result.indices.size() + std::size_t(size);
-        if (needed > maxEntries) throw std::length_error("stencil table over its memory budget");
-        reserveFor(result.indices, needed, maxEntries);
-        result.indices.insert(result.indices.end(), row.indices(), row.indices() + size);
-        result.offsets.push_back(int(needed));
-        rounded.assign(row.weights(), row.weights() + size);
-        result.weightOffsets.push_back(pool.intern(rounded.data(), size));
-        row.clear();
-    }
+    composeParts<float>(outer, inner, maxEntries, [&](const Part<float>& part) {
+        reserveFor(result.indices, result.indices.size() + part.indices.size(), maxEntries);
+        const float* weights = part.weights.data();
+        for (int size : part.sizes) {
+            result.offsets.push_back(result.offsets.back() + size);
+            result.weightOffsets.push_back(pool.intern(weights, size));
+            weights += size;
+        }
+        result.indices.insert(result.indices.end(), part.indices.begin(), part.indices.end());
+    });
     result.weights = pool.take();
     return result;
 }

@@ -5,6 +5,8 @@
 // table must come out bitwise equal: double tables, float tables with their weight pools, and
 // the factorized tables of the Refiner for positions, face-varying values and varying data.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <cstring>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "bench/sphere.h"
+#include "bench/torus.h"
 #include "far/internal/scheme.h"
 #include "far/internal/stencil_table_double.h"
 #include "far/internal/varying_table.h"
@@ -164,6 +167,30 @@ TEST(Composition, HighValenceAsTheReference) {
     Refiner refiner(desc, Options());
     refiner.refineUniform(3);
     checkRefiner(refiner, 3, sphere.name);
+}
+
+// Many waves of parts (far/compose_stencils.cpp): one thread and four give the same tables.
+TEST(Composition, SameTablesOnAnyNumberOfThreads) {
+    const bench::ControlMesh torus = bench::makeTorus(40, bench::TorusFaces::Mixed);
+    TopologyDescriptor desc;
+    desc.numVertices = torus.numVertices;
+    desc.numFaces = torus.numFaces();
+    desc.numVertsPerFace = torus.faceSizes.data();
+    desc.faceVertIndices = torus.faceVerts.data();
+    Options options;
+    options.scheme = Scheme::SchaeferWarren;
+    Refiner refiner(desc, options);
+    refiner.refineUniform(3);
+    StencilTable serial;
+    {
+        const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+        serial = refiner.factorizedStencils(3);
+    }
+    StencilTable threaded;
+    tbb::task_arena(4).execute([&] { threaded = refiner.factorizedStencils(3); });
+    ASSERT_GT(serial.numStencils(), 4 * 4 * 2048) << "fewer stencils than a wave of parts";
+    expectSame(threaded, serial, torus.name + " level 3, 4 threads against 1");
+    checkRefiner(refiner, 3, torus.name);
 }
 
 TEST(Composition, ChannelAndVaryingTablesAsTheReference) {
