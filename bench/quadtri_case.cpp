@@ -42,7 +42,8 @@ std::size_t bytesOf(const std::vector<std::vector<float>>& levels) {
 
 }  // namespace
 
-QuadtriCase::QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level) : mesh_(mesh), level_(level) {
+QuadtriCase::QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level, bool factorized)
+    : mesh_(mesh), level_(level), factorized_(factorized) {
     options_.scheme = scheme;
 }
 
@@ -88,8 +89,8 @@ void QuadtriCase::prepare() {
 
     // Also the factorized build's warm-up.
     try {
-        buildFactorized();
-        factorizedFits_ = true;
+        if (factorized_) buildFactorized();
+        factorizedFits_ = factorized_;
     } catch (const MemoryBudgetError&) {
         factorizedFits_ = false;
     }

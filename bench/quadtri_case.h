@@ -15,7 +15,9 @@ namespace quadtri::bench {
 
 class QuadtriCase {
 public:
-    QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level);
+    // `factorized`: also time the factorized build (where OpenSubdiv's factorized factory is timed
+    // beside it: near the spheres' poles a factorized table takes seconds to build).
+    QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level, bool factorized);
     ~QuadtriCase();
 
     // The untimed first run: builds the refiner, evaluates serially and threaded at both widths,
@@ -50,7 +52,8 @@ private:
     // padded_: the same at 4 floats a vertex (the fourth 0).
     std::vector<std::vector<float>> serial_, threaded_, padded_;
     MemoryFigures memory_;
-    bool factorizedFits_ = false;  // whether the memory budget let prepare() build the factorized table
+    bool factorized_;
+    bool factorizedFits_ = false;  // whether prepare() built the factorized table (asked, within the budget)
 };
 
 }  // namespace quadtri::bench
