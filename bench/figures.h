@@ -25,6 +25,9 @@ struct MemoryFigures {
 struct QuadtriFigures {
     Timing build1Ms;                      // Refiner construction + refineUniform(level), oneTBB limited to 1 thread
     Timing buildMs;                       // the same on all threads
+    // The same build and then factorizedStencils(level), on 1 thread and on all (absent where the
+    // memory budget refuses the factorized table, and where OpenSubdiv has no case beside it).
+    std::optional<Timing> buildFactorized1Ms, buildFactorizedMs;
     std::size_t tableBytes = 0;           // sum of the per-level tables' bytes()
     Timing evalSerialMs;                  // CpuEvaluator, level by level, 3 floats a vertex
     Timing evalThreadedMs;                // TbbEvaluator, the same, all threads

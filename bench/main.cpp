@@ -149,7 +149,7 @@ CaseResult runCase(const ControlMesh& mesh, const CaseSpec& spec, int reps, int 
     result.scheme = schemeName(spec);
     result.level = spec.level;
 
-    QuadtriCase qt(mesh, spec.scheme, spec.level);
+    QuadtriCase qt(mesh, spec.scheme, spec.level, spec.osd.has_value());
     qt.prepare();
     result.refinedVertices = qt.refinedVertices();
     std::optional<OsdCase> osd;

@@ -127,6 +127,10 @@ def threaded_table(r):
     return rows
 
 
+def median(t):
+    return t["median"] if t else None
+
+
 def build_table(r):
     n = r["threads"]
     rows = [f"| mesh | scheme | L | quadtri 1t ms | quadtri {n}t ms | OSD per-level ms | OSD factorized ms"
@@ -141,6 +145,21 @@ def build_table(r):
         else:
             osd_cols = "– | – | – | –"
         rows.append(f"| {case_label(c)} | {timing(q['build_1t_ms'])} | {timing(q['build_ms'])} | {osd_cols} |")
+    return rows
+
+
+def factorized_build_table(r):
+    n = r["threads"]
+    rows = [f"| mesh | scheme | L | quadtri factorized 1t ms | quadtri factorized {n}t ms | OSD factorized ms"
+            f" | OSD / quadtri 1t | quadtri factorized / per-level, 1t |",
+            "|---|---|---:|---:|---:|---:|---:|---:|"]
+    for c in [c for c in r["cases"] if c["quadtri"].get("build_factorized_1t_ms")]:
+        q, o = c["quadtri"], c["osd"]
+        fact1 = median(q.get("build_factorized_1t_ms"))
+        osd_cols = (f"{timing(o['build_factorized_ms'])} | {ratio(o['build_factorized_ms']['median'], fact1)}"
+                    if o else "– | –")
+        rows.append(f"| {case_label(c)} | {timing(q.get('build_factorized_1t_ms'))} | "
+                    f"{timing(q.get('build_factorized_ms'))} | {osd_cols} | {ratio(fact1, q['build_1t_ms']['median'])} |")
     return rows
 
 
@@ -226,6 +245,9 @@ def summary(r):
                    / q(c, "build_1t_ms") for c in deep])
     build = span([min(c["osd"]["build_per_level_ms"]["median"], c["osd"]["build_factorized_ms"]["median"])
                   / q(c, "build_ms") for c in deep])
+    fact = [c for c in deep if c["quadtri"].get("build_factorized_1t_ms")]
+    fact1 = span([c["osd"]["build_factorized_ms"]["median"] / q(c, "build_factorized_1t_ms") for c in fact])
+    fact_own = span([q(c, "build_factorized_1t_ms") / q(c, "build_1t_ms") for c in fact])
     pad = span([osd_best(c["osd"], ["cpu"], 3)[1] / osd_best(c["osd"], ["cpu"], 4)[1] for c in deep])
     omp = span([osd_best(c["osd"], ["omp"], w)[1] / osd_best(c["osd"], ["cpu"], w)[1] for c in deep for w in (3, 4)])
     bandwidth = span([gbps(c["quadtri"]["compulsory_bytes"], q(c, "eval_threaded_ms")) / r["memcpy"]["gbps_all"]
@@ -245,6 +267,9 @@ def summary(r):
         f" evaluation moves its compulsory bytes at {bandwidth} of the {n}-thread 256 MiB memcpy bandwidth.",
         f"- Build (topology and tables): {build1}x OpenSubdiv's faster table kind with quadtri on 1 thread,"
         f" {build}x with quadtri on {n} threads (OpenSubdiv's factory is serial).",
+        f"- Factorized build (topology and the last level's table over the control vertices): {fact1}x"
+        f" OpenSubdiv's factorized `StencilTableFactory` with quadtri on 1 thread; quadtri's factorized build takes"
+        f" {fact_own}x its per-level build.",
     ]
 
 
@@ -399,6 +424,10 @@ def case_tables(r):
     lines += ["", "Build, topology and tables included (quadtri: `Refiner` + `refineUniform`, oneTBB limited by"
               " `tbb::global_control` for 1t; OpenSubdiv: `TopologyRefiner` + `RefineUniform` + `StencilTableFactory`):", ""]
     lines += build_table(r)
+    lines += ["", "Factorized build, topology and the last level's table over the control vertices (quadtri: the"
+              " same and `factorizedStencils(L)`; OpenSubdiv: its factory with `factorizeIntermediateLevels`,"
+              " serial); last column: quadtri's factorized build over its per-level build, both on 1 thread:", ""]
+    lines += factorized_build_table(r)
     lines += ["", "Memory: tables by count; peak is the most memory resident above what was resident when the"
               " case's untimed first run began (build with its transient arrays, tables, the 3-float level buffers;"
               " OpenSubdiv's per-level table with its refiner):", ""]

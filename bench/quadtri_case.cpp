@@ -42,7 +42,8 @@ std::size_t bytesOf(const std::vector<std::vector<float>>& levels) {
 
 }  // namespace
 
-QuadtriCase::QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level) : mesh_(mesh), level_(level) {
+QuadtriCase::QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level, bool factorized)
+    : mesh_(mesh), level_(level), factorized_(factorized) {
     options_.scheme = scheme;
 }
 
@@ -57,6 +58,12 @@ std::unique_ptr<Refiner> QuadtriCase::build() const {
     auto refiner = std::make_unique<Refiner>(desc, options_);
     refiner->refineUniform(level_);
     return refiner;
+}
+
+QuadtriCase::FactorizedBuild QuadtriCase::buildFactorized() const {
+    FactorizedBuild b{build(), {}};
+    b.table = b.refiner->factorizedStencils(level_);
+    return b;
 }
 
 template <class Evaluator>
@@ -79,6 +86,14 @@ void QuadtriCase::prepare() {
     for (int L = 1; L <= level_; ++L) memory_.tableBytes += refiner_->levelStencils(L).bytes();
     memory_.bufferBytes = bytesOf(serial_);
     memory_.peakResidentBytes = peak.peakAboveStart();
+
+    // Also the factorized build's warm-up.
+    try {
+        if (factorized_) buildFactorized();
+        factorizedFits_ = factorized_;
+    } catch (const MemoryBudgetError&) {
+        factorizedFits_ = false;
+    }
 
     threaded_ = serial_;
     for (int L = 1; L <= level_; ++L) std::fill(threaded_[L].begin(), threaded_[L].end(), 0.0f);
@@ -108,11 +123,23 @@ QuadtriFigures QuadtriCase::measure(int reps) {
         }  // each refiner is destroyed outside its timed span
         return summarize(builds);
     };
+    auto timeFactorizedBuilds = [&]() -> std::optional<Timing> {
+        if (!factorizedFits_) return std::nullopt;
+        std::vector<double> builds;
+        for (int r = 0; r < reps; ++r) {
+            Stopwatch watch;
+            const FactorizedBuild b = buildFactorized();
+            builds.push_back(watch.elapsedMs());
+        }  // as above
+        return summarize(builds);
+    };
     {
         const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
         f.build1Ms = timeBuilds();
+        f.buildFactorized1Ms = timeFactorizedBuilds();
     }
     f.buildMs = timeBuilds();
+    f.buildFactorizedMs = timeFactorizedBuilds();
 
     for (int L = 1; L <= level_; ++L) {
         const StencilTable& t = refiner_->levelStencils(L);

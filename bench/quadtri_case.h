@@ -15,7 +15,9 @@ namespace quadtri::bench {
 
 class QuadtriCase {
 public:
-    QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level);
+    // `factorized`: also time the factorized build (where OpenSubdiv's factorized factory is timed
+    // beside it: near the spheres' poles a factorized table takes seconds to build).
+    QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level, bool factorized);
     ~QuadtriCase();
 
     // The untimed first run: builds the refiner, evaluates serially and threaded at both widths,
@@ -33,6 +35,12 @@ public:
 
 private:
     std::unique_ptr<Refiner> build() const;
+    // build() and the last level's factorized table, as OpenSubdiv's factorized factory builds it.
+    struct FactorizedBuild {
+        std::unique_ptr<Refiner> refiner;
+        StencilTable table;
+    };
+    FactorizedBuild buildFactorized() const;
     template <class Evaluator>
     void eval(std::vector<std::vector<float>>& levels, int width);
 
@@ -44,6 +52,8 @@ private:
     // padded_: the same at 4 floats a vertex (the fourth 0).
     std::vector<std::vector<float>> serial_, threaded_, padded_;
     MemoryFigures memory_;
+    bool factorized_;
+    bool factorizedFits_ = false;  // whether prepare() built the factorized table (asked, within the budget)
 };
 
 }  // namespace quadtri::bench

@@ -62,6 +62,8 @@ void writeCaseJson(std::ostream& f, const CaseResult& c) {
     f << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme) << ", \"level\": " << c.level
       << ", \"refined_vertices\": " << c.refinedVertices << ",\n     \"memcpy_working_set\": " << json(c.memcpyWorkingSet)
       << ",\n     \"quadtri\": {\"build_1t_ms\": " << json(q.build1Ms) << ", \"build_ms\": " << json(q.buildMs)
+      << ",\n       \"build_factorized_1t_ms\": " << json(q.buildFactorized1Ms)
+      << ", \"build_factorized_ms\": " << json(q.buildFactorizedMs)
       << ",\n       \"table_bytes\": " << q.tableBytes << ", \"compulsory_bytes\": " << number(q.compulsoryBytes, "%.0f")
       << ", \"compulsory_bytes_4f\": " << number(q.compulsoryBytes4, "%.0f")
       << ",\n       \"eval_serial_ms\": " << json(q.evalSerialMs) << ",\n       \"eval_threaded_ms\": "
@@ -150,10 +152,10 @@ void printLimitMarkdown(std::ostream& out, const std::vector<LimitCaseResult>& c
 // bandwidth the evaluation reaches.
 void printCasesMarkdown(std::ostream& out, const BenchResult& r) {
     out << "| mesh | scheme | L | vertices | qt build ms 1t / " << r.threads << "t | OSD build ms (per-level / fact.)"
-        << " | build OSD/qt 1t | qt MiB | OSD MiB (per-level / fact.) | qt eval ms serial / TBB (3f)"
+        << " | build OSD/qt 1t | qt fact. build ms 1t / " << r.threads << "t | fact. build OSD/qt 1t | qt MiB | OSD MiB (per-level / fact.) | qt eval ms serial / TBB (3f)"
         << " | OSD best ms serial 4f / 3f / any | eval OSD/qt serial | eval OSD/qt TBB"
         << " | qt TBB / memcpy (working set) | peak MiB qt / OSD | qt Vulkan eval / upload ms |\n";
-    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const CaseResult& c : r.cases) {
         const QuadtriFigures& q = c.quadtri;
         std::string bandwidth = "–";
@@ -166,13 +168,15 @@ void printCasesMarkdown(std::ostream& out, const BenchResult& r) {
             const OsdFigures& o = *c.osd;
             out << ms(o.buildPerLevelMs.median) << " / " << ms(o.buildFactorizedMs.median) << " | "
                 << ratio(std::min(o.buildPerLevelMs.median, o.buildFactorizedMs.median), q.build1Ms.median) << " | "
+                << ms(q.buildFactorized1Ms) << " / " << ms(q.buildFactorizedMs) << " | "
+                << (q.buildFactorized1Ms ? ratio(o.buildFactorizedMs.median, q.buildFactorized1Ms->median) : "–") << " | "
                 << mib(q.tableBytes) << " | " << mib(o.tableBytes) << " / " << mib(o.tableBytesFactorized) << " | "
                 << ms(q.evalSerialMs.median) << " / " << ms(q.evalThreadedMs.median) << " | "
                 << ms(osdBest(o, true, 4)) << " / " << ms(osdBest(o, true, 3)) << " / " << ms(osdBest(o, false)) << " | "
                 << ratio(osdBest(o, true), q.evalSerialMs.median) << " | "
                 << ratio(osdBest(o, false), q.evalThreadedMs.median);
         } else {
-            out << "– | – | " << mib(q.tableBytes) << " | – | " << ms(q.evalSerialMs.median) << " / "
+            out << "– | – | " << ms(q.buildFactorized1Ms) << " / " << ms(q.buildFactorizedMs) << " | – | " << mib(q.tableBytes) << " | – | " << ms(q.evalSerialMs.median) << " / "
                 << ms(q.evalThreadedMs.median) << " | – | – | –";
         }
         out << " | " << bandwidth << " | " << mib(q.memory.peakResidentBytes) << " / "

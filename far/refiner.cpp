@@ -119,18 +119,48 @@ private:
     std::size_t held_, budget_, used_ = 0;  // used: bytes of the double tables alive at this point
 };
 
-// Tables of levels 1..L composed in double, over the control vertices: table(l) makes level l's
-// over level l-1, bytes(l) is what it takes, reserved before it is made.
-template <class Table, class Bytes>
-StencilTableD composeLevelTables(int L, CompositionBudget& budget, Table table, Bytes bytes) {
-    budget.reserve(bytes(1));
-    StencilTableD composed = table(1);
+// The per-level tables a composition reads: table(l) makes level l's over level l-1 in double,
+// outer(l) is level l's table as the composition reads it (the stored float table, read as its
+// double copy would be, where there is one), and bytes(l) is what that double copy takes,
+// reserved before level l is composed whether or not it is made, so that what the budget
+// refuses does not depend on which way the table is read.
+struct PositionLevels {
+    const Refiner& refiner;
+    StencilTableD table(int l) const { return toDoubleTable(refiner.levelStencils(l)); }
+    const StencilTable& outer(int l) const { return refiner.levelStencils(l); }
+    std::size_t bytes(int l) const { return doubleBytes(refiner.levelStencils(l)); }
+};
+
+struct ChannelLevels {
+    const FVarChannelRefinement& channel;
+    StencilTableD table(int l) const { return toDoubleTable(channel.levelStencils(l)); }
+    const StencilTable& outer(int l) const { return channel.levelStencils(l); }
+    std::size_t bytes(int l) const { return doubleBytes(channel.levelStencils(l)); }
+};
+
+// Varying tables (a level below maxLevel() always has full topology).
+struct VaryingLevels {
+    const Refiner& refiner;
+    ChildNumbering numbering(int l) const {
+        const Topology& parent = refiner.level(l - 1);
+        return numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit());
+    }
+    StencilTableD table(int l) const { return buildVaryingStencils(refiner.level(l - 1), numbering(l)); }
+    StencilTableD outer(int l) const { return table(l); }
+    std::size_t bytes(int l) const { return varyingStencilBytes(refiner.level(l - 1), numbering(l)); }
+};
+
+// Tables of levels 1..L composed in double, over the control vertices.
+template <class Levels>
+StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels& levels) {
+    budget.reserve(levels.bytes(1));
+    StencilTableD composed = levels.table(1);
     for (int l = 2; l <= L; ++l) {
-        budget.reserve(bytes(l));
-        const StencilTableD outer = table(l);
+        budget.reserve(levels.bytes(l));
+        const auto& outer = levels.outer(l);  // a reference, or a table kept for this step
         try {
             StencilTableD next = composeStencils(outer, composed, budget.left());
-            budget.release(bytes(l) + bytesOf(composed));
+            budget.release(levels.bytes(l) + bytesOf(composed));
             budget.reserve(bytesOf(next));
             composed = std::move(next);
         } catch (const std::length_error&) {
@@ -140,26 +170,38 @@ StencilTableD composeLevelTables(int L, CompositionBudget& budget, Table table, 
     return composed;
 }
 
-// The per-level tables of levels 1..L composed in double, over the control vertices.
-StencilTableD composeLevels(const Refiner& refiner, int L, CompositionBudget& budget) {
-    return composeLevelTables(
-        L, budget, [&](int l) { return toDoubleTable(refiner.levelStencils(l)); },
-        [&](int l) { return doubleBytes(refiner.levelStencils(l)); });
+// Bytes of a float table of n stencils and `entries` entries (an index per entry, two ints per
+// stencil, a weight pool of at most one float per entry) and of a 3-float output for it.
+std::size_t floatTableBytes(std::size_t n, std::size_t entries) {
+    return entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float));
 }
 
-// The float table of a composed one, its bytes (an index per entry, two ints per stencil, a
-// weight pool of at most one float per entry) and a 3-float output reserved while the double
-// table still lives.
+// The float table of a composed one, its bytes and output reserved while the double table still
+// lives.
 StencilTable toFloatWithin(const StencilTableD& composed, CompositionBudget& budget) {
-    const std::size_t n = composed.sizes.size(), entries = composed.indices.size();
-    budget.reserve(entries * (sizeof(int) + sizeof(float)) + n * (2 * sizeof(int) + 3 * sizeof(float)));
+    budget.reserve(floatTableBytes(composed.sizes.size(), composed.indices.size()));
     return toFloatTable(composed);
 }
 
-// Level L's varying table over level L-1 (a level below maxLevel() always has full topology).
-StencilTableD varyingLevel(const Refiner& refiner, int L) {
-    const Topology& parent = refiner.level(L - 1);
-    return buildVaryingStencils(parent, numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit()));
+// The tables of levels 1..L composed as composeLevelTables does, stored as float: level L is
+// composed over levels 1..L-1 straight into the float table. The budget is kept as for that
+// table's double form rounded by toFloatWithin, so that what is refused, and what the refusal
+// says, stay the same.
+template <class Levels>
+StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const Levels& levels) {
+    if (L == 1) return toFloatWithin(composeLevelTables(1, budget, levels), budget);
+    const StencilTableD inner = composeLevelTables(L - 1, budget, levels);
+    budget.reserve(levels.bytes(L));
+    StencilTable composed;
+    try {
+        composed = composeStencilsToFloat(levels.outer(L), inner, budget.left());
+    } catch (const std::length_error&) {
+        throw budget.refuse(budget.budget() + 1);
+    }
+    budget.release(levels.bytes(L) + bytesOf(inner));
+    budget.reserve(doubleBytes(composed));
+    budget.reserve(floatTableBytes(std::size_t(composed.numStencils()), composed.numEntries()));
+    return composed;
 }
 
 // Entries of the limit stencils of a level: at most the vertex, its edge neighbours and its
@@ -223,13 +265,6 @@ LimitStencilTableD fvarLimitStencilsOf(const FVarChannelRefinement& channel, int
     return table;
 }
 
-// A channel's per-level tables of levels 1..L composed in double, over its own values.
-StencilTableD composeFVarLevels(const FVarChannelRefinement& channel, int L, CompositionBudget& budget) {
-    return composeLevelTables(
-        L, budget, [&](int l) { return toDoubleTable(channel.levelStencils(l)); },
-        [&](int l) { return doubleBytes(channel.levelStencils(l)); });
-}
-
 // A limit table (limitOf()) composed with the tables below it (levelsOf()), rounded to float, each
 // made and freed within `budget`.
 template <class Limit, class Levels>
@@ -255,7 +290,7 @@ StencilTable Refiner::factorizedStencils(int L) const {
     checkRefinedLevel("factorized stencils", L);
     CompositionBudget budget("the factorized stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
-    return toFloatWithin(composeLevels(*this, L, budget), budget);
+    return composeLevelTablesToFloat(L, budget, PositionLevels{*this});
 }
 
 void Refiner::checkRefinedLevel(const char* what, int L) const {
@@ -266,20 +301,14 @@ void Refiner::checkRefinedLevel(const char* what, int L) const {
 
 StencilTable Refiner::varyingStencils(int L) const {
     checkRefinedLevel("varying stencils", L);
-    return toFloatTable(varyingLevel(*this, L));
+    return toFloatTable(VaryingLevels{*this}.table(L));
 }
 
 StencilTable Refiner::factorizedVaryingStencils(int L) const {
     checkRefinedLevel("factorized varying stencils", L);
     CompositionBudget budget("the factorized varying stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
-    const StencilTableD composed = composeLevelTables(
-        L, budget, [&](int l) { return varyingLevel(*this, l); },
-        [&](int l) {
-            const Topology& parent = level(l - 1);
-            return varyingStencilBytes(parent, numberChildren(parent, rulesOf(options_.scheme).triangleSplit()));
-        });
-    return toFloatWithin(composed, budget);
+    return composeLevelTablesToFloat(L, budget, VaryingLevels{*this});
 }
 
 const FVarChannelRefinement& Refiner::channel(int c) const {
@@ -324,7 +353,7 @@ StencilTable Refiner::fvarFactorizedStencils(int c, int L) const {
     CompositionBudget budget("the factorized stencils of face-varying channel " + std::to_string(c) + " at level " +
                                  std::to_string(L),
                              bytes(), options_.memoryBudgetBytes);
-    return toFloatWithin(composeFVarLevels(ch, L, budget), budget);
+    return composeLevelTablesToFloat(L, budget, ChannelLevels{ch});
 }
 
 void Refiner::checkLimitLevel(const char* what, int L) const {
@@ -347,7 +376,7 @@ LimitStencilTable Refiner::factorizedLimitStencils(int L) const {
     CompositionBudget budget("the factorized limit stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
     return composeLimitWithin(
-        budget, [&] { return limitStencilsOf(*this, L, budget); }, [&] { return composeLevels(*this, L, budget); });
+        budget, [&] { return limitStencilsOf(*this, L, budget); }, [&] { return composeLevelTables(L, budget, PositionLevels{*this}); });
 }
 
 LimitStencilTable Refiner::fvarLimitStencils(int c, int L) const {
@@ -370,7 +399,7 @@ LimitStencilTable Refiner::fvarFactorizedLimitStencils(int c, int L) const {
                              bytes(), options_.memoryBudgetBytes);
     return composeLimitWithin(
         budget, [&] { return fvarLimitStencilsOf(ch, L, options_, budget); },
-        [&] { return composeFVarLevels(ch, L, budget); });
+        [&] { return composeLevelTables(L, budget, ChannelLevels{ch}); });
 }
 
 }  // namespace v0

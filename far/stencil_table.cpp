@@ -1,11 +1,6 @@
-// Conversion of built (double) tables to stored (float, weight-pooled) ones and back, and
-// composition of per-level tables into factorized ones.
+// Conversion of built (double) tables to stored (float, weight-pooled) ones and back.
 #include <quadtri/far/stencil_table.h>
 
-#include <algorithm>
-#include <stdexcept>
-
-#include "far/internal/sparse_accumulator.h"
 #include "far/internal/weight_pool.h"
 #include "far/internal/stencil_table_double.h"
 
@@ -49,40 +44,6 @@ StencilTableD toDoubleTable(const StencilTable& t) {
 
 std::size_t bytesOf(const StencilTableD& t) {
     return (t.sizes.size() + t.offsets.size() + t.indices.size()) * sizeof(int) + t.weights.size() * sizeof(double);
-}
-
-StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes) {
-    StencilTableD result;
-    result.numSourceVertices = inner.numSourceVertices;
-    const int n = int(outer.sizes.size());
-    constexpr std::size_t kEntryBytes = sizeof(int) + sizeof(double), kStencilBytes = 2 * sizeof(int);
-    const std::size_t perStencil = std::size_t(n) * kStencilBytes;
-    if (perStencil > maxBytes) throw std::length_error("stencil table over its memory budget");
-    // The entries are not known until composed: grow the arrays by doubling, but never past the
-    // budget, so that a refusal comes before the allocation that would break it.
-    const std::size_t maxEntries = std::min<std::size_t>((maxBytes - perStencil) / kEntryBytes, (1u << 31) - 1);
-    result.sizes.reserve(n);
-    result.offsets.reserve(n);
-    auto reserveEntries = [&](std::size_t count) {
-        result.indices.reserve(count);
-        result.weights.reserve(count);
-    };
-    reserveEntries(std::min(maxEntries, outer.indices.size()));
-    SparseAccumulator acc(inner.numSourceVertices);
-    for (int i = 0; i < n; ++i) {
-        for (int k = outer.offsets[i]; k < outer.offsets[i] + outer.sizes[i]; ++k) {
-            const int j = outer.indices[k];
-            const double w = outer.weights[k];
-            for (int m = inner.offsets[j]; m < inner.offsets[j] + inner.sizes[j]; ++m)
-                acc.add(inner.indices[m], w * inner.weights[m]);
-        }
-        const std::size_t needed = result.indices.size() + std::size_t(acc.size());
-        if (needed > maxEntries) throw std::length_error("stencil table over its memory budget");
-        if (needed > result.indices.capacity()) reserveEntries(std::min(maxEntries, 2 * needed));
-        result.offsets.push_back(int(result.indices.size()));
-        result.sizes.push_back(acc.flush(result.indices, result.weights));
-    }
-    return result;
 }
 
 }  // namespace v0

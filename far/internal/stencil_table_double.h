@@ -31,8 +31,18 @@ std::size_t bytesOf(const StencilTableD& table);
 // outer ∘ inner: stencils of `outer` (over inner's stencils) expanded over inner's sources.
 // Throws std::length_error before the result's arrays would pass `maxBytes` (or 2^31 - 1
 // entries, the reach of its int offsets); the caller names what was refused.
+// An outer float table composes as its toDoubleTable() would, bitwise, without that copy.
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner,
                               std::size_t maxBytes = ~std::size_t(0));
+StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& inner,
+                              std::size_t maxBytes = ~std::size_t(0));
+
+// The same composition stored as float: bitwise toFloatTable(composeStencils(outer, inner,
+// maxBytes)), refused at the same point, without the double result (far/compose_stencils.cpp).
+StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner,
+                                    std::size_t maxBytes = ~std::size_t(0));
+StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner,
+                                    std::size_t maxBytes = ~std::size_t(0));
 
 }  // namespace v0
 }  // namespace quadtri

@@ -1,0 +1,217 @@
+// The composition of stencil tables (far/compose_stencils.cpp) against a straightforward one
+// kept here: each composed stencil a list of (source, sum) merged by linear search, sources in
+// the order first reached, each sum added up in the order of the outer entries and then of the
+// inner ones. The library's dense scatter row does the same arithmetic in the same order, so every
+// table must come out bitwise equal: double tables, float tables with their weight pools, and
+// the factorized tables of the Refiner for positions, face-varying values and varying data.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bench/sphere.h"
+#include "bench/torus.h"
+#include "far/internal/scheme.h"
+#include "far/internal/stencil_table_double.h"
+#include "far/internal/varying_table.h"
+#include "tests/test_support.h"
+
+namespace quadtri::test {
+namespace {
+
+StencilTableD referenceCompose(const StencilTableD& outer, const StencilTableD& inner) {
+    StencilTableD out;
+    out.numSourceVertices = inner.numSourceVertices;
+    for (std::size_t i = 0; i < outer.sizes.size(); ++i) {
+        std::vector<std::pair<int, double>> row;
+        for (int k = outer.offsets[i]; k < outer.offsets[i] + outer.sizes[i]; ++k) {
+            const int j = outer.indices[std::size_t(k)];
+            for (int m = inner.offsets[std::size_t(j)]; m < inner.offsets[std::size_t(j)] + inner.sizes[std::size_t(j)]; ++m) {
+                const int source = inner.indices[std::size_t(m)];
+                const double term = outer.weights[std::size_t(k)] * inner.weights[std::size_t(m)];
+                std::size_t at = 0;
+                while (at < row.size() && row[at].first != source) ++at;
+                if (at == row.size()) row.push_back({source, term});
+                else row[at].second += term;
+            }
+        }
+        out.offsets.push_back(int(out.indices.size()));
+        out.sizes.push_back(int(row.size()));
+        for (const auto& [source, sum] : row) {
+            out.indices.push_back(source);
+            out.weights.push_back(sum);
+        }
+    }
+    return out;
+}
+
+// Bitwise: -0.0 and 0.0 apart.
+bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
+}
+
+void expectSame(const StencilTableD& got, const StencilTableD& want, const std::string& where) {
+    EXPECT_EQ(got.numSourceVertices, want.numSourceVertices) << where;
+    EXPECT_EQ(got.sizes, want.sizes) << where;
+    EXPECT_EQ(got.offsets, want.offsets) << where;
+    EXPECT_EQ(got.indices, want.indices) << where;
+    EXPECT_TRUE(sameBits(got.weights, want.weights)) << where << ": weights differ";
+}
+
+void expectSame(const StencilTable& got, const StencilTable& want, const std::string& where) {
+    EXPECT_EQ(got.numSourceVertices, want.numSourceVertices) << where;
+    EXPECT_EQ(got.offsets, want.offsets) << where;
+    EXPECT_EQ(got.indices, want.indices) << where;
+    EXPECT_EQ(got.weightOffsets, want.weightOffsets) << where;
+    EXPECT_TRUE(sameBits(got.weights, want.weights)) << where << ": weight pools differ";
+}
+
+// Levels 1..L of `levels` (double tables, level l's over level l-1's) composed by the reference.
+StencilTableD referenceChain(const std::vector<StencilTableD>& levels, int L) {
+    StencilTableD composed = levels[0];
+    for (int l = 2; l <= L; ++l) composed = referenceCompose(levels[std::size_t(l) - 1], composed);
+    return composed;
+}
+
+// A table by hand: stencil i reads sources[i] with weights[i].
+StencilTableD tableOf(int numSources, const std::vector<std::vector<int>>& sources,
+                      const std::vector<std::vector<double>>& weights) {
+    StencilTableD t;
+    t.numSourceVertices = numSources;
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+        t.offsets.push_back(int(t.indices.size()));
+        t.sizes.push_back(int(sources[i].size()));
+        t.indices.insert(t.indices.end(), sources[i].begin(), sources[i].end());
+        t.weights.insert(t.weights.end(), weights[i].begin(), weights[i].end());
+    }
+    return t;
+}
+
+TEST(Composition, HandMadeTablesAsTheReference) {
+    // Inner stencil 0 starts a sum at -0.0 (which must stay -0.0), stencil 1 adds +0.0 to a source
+    // stencil 0 left at -0.0, stencil 2 reads one source twice, stencil 3 is empty, and stencil 4
+    // reaches 300 sources, past every initial capacity.
+    std::vector<int> wide(300);
+    std::vector<double> wideWeights(300);
+    for (int s = 0; s < 300; ++s) {
+        wide[std::size_t(s)] = (s * 37) % 300;
+        wideWeights[std::size_t(s)] = 1.0 / (1 + s);
+    }
+    const StencilTableD inner = tableOf(300, {{5, 7}, {5, 9}, {2, 2, 3}, {}, wide},
+                                        {{-0.0, 0.5}, {0.0, 0.25}, {0.125, 0.375, 0.5}, {}, wideWeights});
+    const StencilTableD outer = tableOf(5, {{0}, {0, 1}, {2, 3, 0}, {}, {4, 2, 4, 1}, {3}},
+                                        {{1.0}, {1.0, 1.0}, {0.75, 0.5, -0.25}, {}, {0.5, 0.25, 0.5, 1e-300}, {1.0}});
+    const StencilTableD want = referenceCompose(outer, inner);
+    ASSERT_TRUE(std::signbit(want.weights[0])) << "the reference keeps -0.0";
+    expectSame(composeStencils(outer, inner), want, "double");
+    expectSame(composeStencilsToFloat(outer, inner), toFloatTable(want), "float");
+}
+
+TEST(Composition, RefusesAtTheSameBytes) {
+    const StencilTableD inner = tableOf(4, {{0, 1}, {2, 3}}, {{0.5, 0.5}, {0.5, 0.5}});
+    const StencilTableD outer = tableOf(2, {{0, 1}, {0, 1}, {1}}, {{0.5, 0.5}, {0.5, 0.5}, {1.0}});
+    const StencilTableD want = referenceCompose(outer, inner);
+    const std::size_t exact = bytesOf(want);
+    EXPECT_NO_THROW(composeStencils(outer, inner, exact));
+    EXPECT_NO_THROW(composeStencilsToFloat(outer, inner, exact));
+    EXPECT_THROW(composeStencils(outer, inner, exact - 1), std::length_error);
+    EXPECT_THROW(composeStencilsToFloat(outer, inner, exact - 1), std::length_error);
+}
+
+// Double tables of levels 1..L built by the analyzer, as the Refiner composes them.
+std::vector<StencilTableD> doubleLevels(const Refiner& refiner, int L) {
+    std::vector<StencilTableD> levels;
+    for (int l = 1; l <= L; ++l) levels.push_back(toDoubleTable(refiner.levelStencils(l)));
+    return levels;
+}
+
+void checkRefiner(const Refiner& refiner, int maxLevel, const std::string& name) {
+    const std::vector<StencilTableD> levels = doubleLevels(refiner, maxLevel);
+    for (int L = 1; L <= maxLevel; ++L) {
+        const std::string where = name + " level " + std::to_string(L);
+        const StencilTableD want = referenceChain(levels, L);
+        if (L >= 2) {
+            const StencilTableD inner = referenceChain(levels, L - 1);
+            expectSame(composeStencils(levels[std::size_t(L) - 1], inner), want, where);
+            expectSame(composeStencils(refiner.levelStencils(L), inner), want, where + " from the float table");
+            expectSame(composeStencilsToFloat(refiner.levelStencils(L), inner), toFloatTable(want), where + " to float");
+        }
+        expectSame(refiner.factorizedStencils(L), toFloatTable(want), where + " factorized");
+    }
+}
+
+TEST(Composition, FactorizedTablesAsTheReference) {
+    for (const char* name : {"mixed/mixed_torus.obj", "mixed/cylinder_capped_creased.obj", "osd/catmark_pole8.obj",
+                             "osd/loop_xord_interior.obj", "osd/catmark_fan.obj"}) {
+        const RefinedMesh r = refineMesh(name, 3);
+        checkRefiner(*r.refiner, 3, name);
+    }
+}
+
+// Poles of valence 64: composed stencils near them pass a hundred sources.
+TEST(Composition, HighValenceAsTheReference) {
+    const bench::ControlMesh sphere = bench::makeUvSphere(64, 6, bench::SpherePoles::TriangleFans);
+    TopologyDescriptor desc;
+    desc.numVertices = sphere.numVertices;
+    desc.numFaces = sphere.numFaces();
+    desc.numVertsPerFace = sphere.faceSizes.data();
+    desc.faceVertIndices = sphere.faceVerts.data();
+    Refiner refiner(desc, Options());
+    refiner.refineUniform(3);
+    checkRefiner(refiner, 3, sphere.name);
+}
+
+// Many waves of parts (far/compose_stencils.cpp): one thread and four give the same tables.
+TEST(Composition, SameTablesOnAnyNumberOfThreads) {
+    const bench::ControlMesh torus = bench::makeTorus(40, bench::TorusFaces::Mixed);
+    TopologyDescriptor desc;
+    desc.numVertices = torus.numVertices;
+    desc.numFaces = torus.numFaces();
+    desc.numVertsPerFace = torus.faceSizes.data();
+    desc.faceVertIndices = torus.faceVerts.data();
+    Options options;
+    options.scheme = Scheme::SchaeferWarren;
+    Refiner refiner(desc, options);
+    refiner.refineUniform(3);
+    StencilTable serial;
+    {
+        const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+        serial = refiner.factorizedStencils(3);
+    }
+    StencilTable threaded;
+    tbb::task_arena(4).execute([&] { threaded = refiner.factorizedStencils(3); });
+    ASSERT_GT(serial.numStencils(), 4 * 4 * 2048) << "fewer stencils than a wave of parts";
+    expectSame(threaded, serial, torus.name + " level 3, 4 threads against 1");
+    checkRefiner(refiner, 3, torus.name);
+}
+
+TEST(Composition, ChannelAndVaryingTablesAsTheReference) {
+    const io::ObjMesh mesh = io::readObj(meshPath("osd/catmark_torus.obj"));
+    ASSERT_TRUE(mesh.hasUVs());
+    FVarChannel uvs;
+    Refiner refiner(mesh.descriptor(uvs), mesh.applyTags(Options()));
+    refiner.refineUniform(3);
+    std::vector<StencilTableD> channel, varying;
+    for (int l = 1; l <= 3; ++l) {
+        channel.push_back(toDoubleTable(refiner.fvarLevelStencils(0, l)));
+        const Topology& parent = refiner.level(l - 1);
+        varying.push_back(
+            buildVaryingStencils(parent, numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit())));
+    }
+    for (int L = 1; L <= 3; ++L) {
+        const std::string where = "catmark_torus level " + std::to_string(L);
+        expectSame(refiner.fvarFactorizedStencils(0, L), toFloatTable(referenceChain(channel, L)), where + " channel");
+        expectSame(refiner.factorizedVaryingStencils(L), toFloatTable(referenceChain(varying, L)), where + " varying");
+    }
+}
+
+}  // namespace
+}  // namespace quadtri::test
