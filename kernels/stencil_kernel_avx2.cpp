@@ -8,7 +8,8 @@
 // - stencils taken in runs that share one pooled weight sequence (after a level or two nearly
 //   every stencil is one of a handful of regular masks, in long runs: face points, then edge
 //   points, then vertex points): the run's weights sit in registers, and the loop is unrolled
-//   to the mask sizes of 3 to 12 entries, so a run costs one branch.
+//   to the mask sizes of 3 to 12 entries, so a run costs one branch. Given a StencilRuns' run
+//   list, the loop reads neither offsets nor weightOffsets inside its runs.
 // Width 3 and width 4 do the same float operations on lanes 0-2, so padded positions give the
 // same bits as packed ones. Only names local to this file and the struct layouts are used: an
 // inline function of a shared header instantiated here would carry AVX2 instructions and could
@@ -75,6 +76,26 @@ void evalRunAnySize(const float* src, long srcStride, float* dst, long dstStride
         Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, idx, fromPool, n));
 }
 
+// Stencils [i, runEnd) of n entries each sharing the weights w, their indices consecutive from idx:
+// unrolled for every size of the schemes' regular and near-regular masks.
+template <class Element>
+void evalRunOfSize(const float* src, long srcStride, float* dst, long dstStride, const int* idx, const float* w, int n,
+                   int i, int runEnd) {
+    switch (n) {
+    case 3: evalRun<Element, 3>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 4: evalRun<Element, 4>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 5: evalRun<Element, 5>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 6: evalRun<Element, 6>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 7: evalRun<Element, 7>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 8: evalRun<Element, 8>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 9: evalRun<Element, 9>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 10: evalRun<Element, 10>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 11: evalRun<Element, 11>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 12: evalRun<Element, 12>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    default: evalRunAnySize<Element>(src, srcStride, dst, dstStride, idx, w, n, i, runEnd); break;
+    }
+}
+
 template <class Element>
 void evalStencilsSimd(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
                       int end) {
@@ -89,21 +110,40 @@ void evalStencilsSimd(const float* src, int srcStride, float* dst, int dstStride
         int runEnd = i + 1;
         while (runEnd < end && weightOffsets[runEnd] == weightOffset && offsets[runEnd + 1] - offsets[runEnd] == n)
             ++runEnd;
-        const int* idx = indices + first;
-        const float* w = weights + weightOffset;
-        switch (n) {  // every size of the schemes' regular and near-regular masks, unrolled
-        case 3: evalRun<Element, 3>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 4: evalRun<Element, 4>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 5: evalRun<Element, 5>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 6: evalRun<Element, 6>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 7: evalRun<Element, 7>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 8: evalRun<Element, 8>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 9: evalRun<Element, 9>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 10: evalRun<Element, 10>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 11: evalRun<Element, 11>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 12: evalRun<Element, 12>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        default: evalRunAnySize<Element>(src, srcStride, dst, dstStride, idx, w, n, i, runEnd); break;
-        }
+        evalRunOfSize<Element>(src, srcStride, dst, dstStride, indices + first, weights + weightOffset, n, i, runEnd);
+        i = runEnd;
+    }
+}
+
+// The index of the run holding stencil i (runs in stencil order, the first starting at 0).
+int runHolding(const StencilRun* runs, int numRuns, int i) {
+    int lo = 0, hi = numRuns - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if (runs[mid].firstStencil <= i)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
+}
+
+// The same runs as evalStencilsSimd finds, but taken from the run list: inside a run no per-stencil
+// array is read. A stretch of short runs (weightOffset -1) goes through evalStencilsSimd.
+template <class Element>
+void evalStencilRunsSimd(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
+                         int start, int end) {
+    const StencilArrays t = r.table;
+    const StencilRun* runs = r.runs;
+    for (int k = runHolding(runs, r.numRuns, start), i = start; i < end; ++k) {
+        const StencilRun run = runs[k];
+        const int runEnd = run.firstStencil + run.numStencils < end ? run.firstStencil + run.numStencils : end;
+        if (run.weightOffset < 0)
+            evalStencilsSimd<Element>(src, srcStride, dst, dstStride, t, i, runEnd);
+        else
+            evalRunOfSize<Element>(src, srcStride, dst, dstStride,
+                                   t.indices + t.offsets[run.firstStencil] + long(i - run.firstStencil) * run.size,
+                                   t.weights + run.weightOffset, run.size, i, runEnd);
         i = runEnd;
     }
 }
@@ -118,6 +158,16 @@ void evalStencils3Avx2(const float* src, int srcStride, float* dst, int dstStrid
 void evalStencils4Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
                        int end) {
     evalStencilsSimd<Xyzw>(src, srcStride, dst, dstStride, t, start, end);
+}
+
+void evalStencilRuns3Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
+                          int start, int end) {
+    evalStencilRunsSimd<Xyz>(src, srcStride, dst, dstStride, r, start, end);
+}
+
+void evalStencilRuns4Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
+                          int start, int end) {
+    evalStencilRunsSimd<Xyzw>(src, srcStride, dst, dstStride, r, start, end);
 }
 
 }  // namespace kernels
