@@ -23,6 +23,8 @@ struct StencilRunArrays {
     StencilArrays table;
     const StencilRun* runs;
     int numRuns;
+    const StencilGroup* groups;
+    const int* order;
 };
 
 // Width known at compile time: the accumulator lives in registers and the inner loop unrolls.

@@ -75,6 +75,50 @@ void evalRunAnySize(const float* src, long srcStride, float* dst, long dstStride
         Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, idx, fromPool, n));
 }
 
+// The stencils ids[0, count) of a group, N entries each with the pooled weights w: as evalRun,
+// each stencil's indices found through offsets and its output written at its own row.
+template <class Element, int N>
+void evalGroup(const float* src, long srcStride, float* dst, long dstStride, const int* offsets, const int* indices,
+               const int* ids, int count, const float* w) {
+    __m128 weight[N];
+    for (int k = 0; k < N; ++k) weight[k] = _mm_broadcast_ss(w + k);
+    const auto inRegister = [&](int k) { return weight[k]; };
+    for (int q = 0; q < count; ++q) {
+        const long i = ids[q];
+        Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, indices + offsets[i], inRegister, N));
+    }
+}
+
+template <class Element>
+void evalGroupAnySize(const float* src, long srcStride, float* dst, long dstStride, const int* offsets,
+                      const int* indices, const int* ids, int count, const float* w, int n) {
+    const auto fromPool = [w](int k) { return _mm_broadcast_ss(w + k); };
+    for (int q = 0; q < count; ++q) {
+        const long i = ids[q];
+        Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, indices + offsets[i], fromPool, n));
+    }
+}
+
+template <class Element>
+void evalGroupOfSize(const float* src, long srcStride, float* dst, long dstStride, const StencilArrays& t,
+                     const int* ids, const StencilGroup& g) {
+    const int *offsets = t.offsets, *indices = t.indices;
+    const float* w = t.weights + g.weightOffset;
+    switch (g.size) {
+    case 3: evalGroup<Element, 3>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 4: evalGroup<Element, 4>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 5: evalGroup<Element, 5>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 6: evalGroup<Element, 6>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 7: evalGroup<Element, 7>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 8: evalGroup<Element, 8>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 9: evalGroup<Element, 9>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 10: evalGroup<Element, 10>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 11: evalGroup<Element, 11>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 12: evalGroup<Element, 12>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    default: evalGroupAnySize<Element>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w, g.size); break;
+    }
+}
+
 // Stencils [i, runEnd) of n entries each sharing the weights w, their indices consecutive from idx:
 // unrolled for every size of the schemes' regular and near-regular masks.
 template <class Element>
@@ -128,7 +172,8 @@ int runHolding(const StencilRun* runs, int numRuns, int i) {
 }
 
 // The same runs as evalStencilsSimd finds, but taken from the run list: inside a run no per-stencil
-// array is read. A stretch of short runs (weightOffset -1) goes through evalStencilsSimd.
+// array is read. A chunk of a stretch of short runs goes group by group where [start, end) covers
+// it whole, else (its part in range) through evalStencilsSimd.
 template <class Element>
 void evalStencilRunsSimd(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
                          int start, int end) {
@@ -137,7 +182,10 @@ void evalStencilRunsSimd(const float* src, int srcStride, float* dst, int dstStr
     for (int k = runHolding(runs, r.numRuns, start), i = start; i < end; ++k) {
         const StencilRun run = runs[k];
         const int runEnd = run.firstStencil + run.numStencils < end ? run.firstStencil + run.numStencils : end;
-        if (run.weightOffset < 0)
+        if (run.firstGroup >= 0 && i == run.firstStencil && runEnd == run.firstStencil + run.numStencils)
+            for (int g = run.firstGroup, done = 0; done < run.numStencils; done += r.groups[g].count, ++g)
+                evalGroupOfSize<Element>(src, srcStride, dst, dstStride, t, r.order + r.groups[g].first, r.groups[g]);
+        else if (run.firstGroup >= 0)
             evalStencilsSimd<Element>(src, srcStride, dst, dstStride, t, i, runEnd);
         else
             evalRunOfSize<Element>(src, srcStride, dst, dstStride,

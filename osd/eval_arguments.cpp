@@ -29,7 +29,8 @@ kernels::StencilRunArrays stencilRunArrays(const StencilRuns& runs) {
         throw std::invalid_argument("EvalStencils: the table has " + std::to_string(runs.table().numStencils()) +
                                     " stencils, its StencilRuns were built for " +
                                     std::to_string(runs.numStencils()) + ": build them again");
-    return kernels::StencilRunArrays{stencilArrays(runs.table()), runs.runs().data(), int(runs.runs().size())};
+    return kernels::StencilRunArrays{stencilArrays(runs.table()), runs.runs().data(), int(runs.runs().size()),
+                                     runs.groups().data(), runs.order().data()};
 }
 
 namespace {

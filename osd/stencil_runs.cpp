@@ -1,21 +1,51 @@
 #include <quadtri/osd/stencil_runs.h>
 
+#include <algorithm>
+
 namespace quadtri {
 inline namespace v0 {
 
 StencilRuns::StencilRuns(const StencilTable& table) : table_(&table), numStencils_(table.numStencils()) {
     const int n = numStencils_;
+    int stretch = 0;  // first stencil of the stretch of short runs being collected
     for (int i = 0; i < n;) {
         const int size = table.size(i), weightOffset = table.weightOffsets[i];
         int end = i + 1;
         while (end < n && table.weightOffsets[end] == weightOffset && table.size(end) == size) ++end;
-        if (end - i >= kMinRun)
-            runs_.push_back({i, end - i, size, weightOffset});
-        else if (!runs_.empty() && runs_.back().weightOffset < 0)
-            runs_.back().numStencils += end - i;  // extends the stretch before it
-        else
-            runs_.push_back({i, end - i, 0, -1});
+        if (end - i >= kMinRun) {
+            addStretch(stretch, i);
+            runs_.push_back({i, end - i, size, weightOffset, -1});
+            stretch = end;
+        }
         i = end;
+    }
+    addStretch(stretch, n);
+}
+
+// Stencils [first, end) in chunks of kChunk, each chunk's stencils grouped by (size, weights) in
+// the order the masks first appear, table order inside a group.
+void StencilRuns::addStretch(int first, int end) {
+    const StencilTable& t = *table_;
+    for (int chunk = first; chunk < end; chunk += kChunk) {
+        const int chunkEnd = std::min(end, chunk + kChunk);
+        const int firstGroup = int(groups_.size());
+        runs_.push_back({chunk, chunkEnd - chunk, 0, -1, firstGroup});
+        for (int i = chunk; i < chunkEnd; ++i) {  // the groups' sizes, and each stencil's group
+            int g = firstGroup;
+            while (g < int(groups_.size()) && (groups_[g].weightOffset != t.weightOffsets[i] || groups_[g].size != t.size(i)))
+                ++g;
+            if (g == int(groups_.size())) groups_.push_back({0, 0, t.size(i), t.weightOffsets[i]});
+            ++groups_[g].count;
+        }
+        const int base = int(order_.size());
+        for (int g = firstGroup, at = base; g < int(groups_.size()); at += groups_[g].count, ++g) groups_[g].first = at;
+        order_.resize(order_.size() + std::size_t(chunkEnd - chunk));
+        std::vector<int> filled(groups_.size() - firstGroup, 0);
+        for (int i = chunk; i < chunkEnd; ++i) {
+            int g = firstGroup;
+            while (groups_[g].weightOffset != t.weightOffsets[i] || groups_[g].size != t.size(i)) ++g;
+            order_[groups_[g].first + filled[g - firstGroup]++] = i;
+        }
     }
 }
 

@@ -1,5 +1,5 @@
-// StencilRuns (osd/stencil_runs.h): its runs cover the table in order and agree with its
-// per-stencil arrays, and evaluating through them gives the table's own bits on CpuEvaluator and
+// StencilRuns (osd/stencil_runs.h): its runs and chunks cover the table in order, the chunks' groups
+// list each stencil once, all agree with the table's per-stencil arrays, and evaluating through them gives the table's own bits on CpuEvaluator and
 // TbbEvaluator, for every width, padded layouts and ranges that start and end inside runs.
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
@@ -25,7 +25,7 @@ struct Case {
     Scheme scheme;
 };
 // Catmull-Clark and Loop tables are a few long runs after a level; Schaefer-Warren's of a mixed
-// mesh have many short ones, which become stretches.
+// mesh have many short ones, which become chunks of stretches.
 const Case kCases[] = {{"quads", bench::TorusFaces::Quads, Scheme::StamLoop},
                        {"triangles", bench::TorusFaces::Triangles, Scheme::StamLoop},
                        {"mixed", bench::TorusFaces::Mixed, Scheme::SchaeferWarren}};
@@ -49,25 +49,39 @@ TEST(StencilRuns, CoverTheTableAndAgreeWithItsArrays) {
             ASSERT_EQ(runs.numStencils(), t.numStencils());
             const std::string where = std::string(c.name) + " level " + std::to_string(L);
             int next = 0, inRuns = 0;
+            std::vector<int> listed(t.numStencils(), 0);
             for (std::size_t k = 0; k < runs.runs().size(); ++k) {
                 const StencilRun& r = runs.runs()[k];
                 ASSERT_EQ(r.firstStencil, next) << where << " run " << k;
                 ASSERT_GT(r.numStencils, 0) << where << " run " << k;
                 next += r.numStencils;
-                if (r.weightOffset < 0) {
+                if (r.firstGroup >= 0) {  // a chunk: its groups list each of its stencils once, by mask
+                    EXPECT_LE(r.numStencils, StencilRuns::kChunk) << where << " run " << k;
                     EXPECT_EQ(r.size, 0) << where << " run " << k;
-                    if (k > 0) {
-                        EXPECT_GE(runs.runs()[k - 1].weightOffset, 0) << where << ": two stretches in a row";
+                    EXPECT_EQ(r.weightOffset, -1) << where << " run " << k;
+                    for (int g = r.firstGroup, done = 0; done < r.numStencils; done += runs.groups()[g].count, ++g) {
+                        ASSERT_LT(g, int(runs.groups().size())) << where << " run " << k;
+                        const StencilGroup& group = runs.groups()[g];
+                        ASSERT_GT(group.count, 0) << where << " group " << g;
+                        for (int q = group.first; q < group.first + group.count; ++q) {
+                            const int i = runs.order()[q];
+                            ASSERT_TRUE(i >= r.firstStencil && i < next) << where << " group " << g;
+                            ++listed[i];
+                            ASSERT_EQ(t.size(i), group.size) << where << " stencil " << i;
+                            ASSERT_EQ(t.weightOffsets[i], group.weightOffset) << where << " stencil " << i;
+                        }
                     }
                     continue;
                 }
                 EXPECT_GE(r.numStencils, StencilRuns::kMinRun) << where << " run " << k;
                 inRuns += r.numStencils;
                 for (int i = r.firstStencil; i < next; ++i) {
+                    ++listed[i];
                     ASSERT_EQ(t.size(i), r.size) << where << " stencil " << i;
                     ASSERT_EQ(t.weightOffsets[i], r.weightOffset) << where << " stencil " << i;
                 }
             }
+            for (int i = 0; i < t.numStencils(); ++i) ASSERT_EQ(listed[i], 1) << where << " stencil " << i;
             EXPECT_EQ(next, t.numStencils()) << where;
             // After a level, nearly every quad and triangle stencil is in a run.
             if (c.scheme == Scheme::StamLoop && L >= 2) {
