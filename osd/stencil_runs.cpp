@@ -22,12 +22,13 @@ StencilRuns::StencilRuns(const StencilTable& table) : table_(&table), numStencil
     addStretch(stretch, n);
 }
 
-// Stencils [first, end) in chunks of kChunk, each chunk's stencils grouped by (size, weights) in
-// the order the masks first appear, table order inside a group.
+// Stencils [first, end) in chunks that end at multiples of kChunk (so that TbbEvaluator's blocks,
+// which start at such multiples, cover whole chunks), each chunk's stencils grouped by (size,
+// weights) in the order the masks first appear, table order inside a group.
 void StencilRuns::addStretch(int first, int end) {
     const StencilTable& t = *table_;
-    for (int chunk = first; chunk < end; chunk += kChunk) {
-        const int chunkEnd = std::min(end, chunk + kChunk);
+    for (int chunk = first, chunkEnd; chunk < end; chunk = chunkEnd) {
+        chunkEnd = std::min(end, (chunk / kChunk + 1) * kChunk);
         const int firstGroup = int(groups_.size());
         runs_.push_back({chunk, chunkEnd - chunk, 0, -1, firstGroup});
         for (int i = chunk; i < chunkEnd; ++i) {  // the groups' sizes, and each stencil's group

@@ -43,10 +43,10 @@ public:
     // arrays do, and the kernel's set-up for a run, its weights broadcast once, pays off over
     // several stencils); shorter ones form stretches.
     static constexpr int kMinRun = 8;
-    // Stencils of a stretch per chunk: big enough for groups of ~20 stencils on a mixed mesh's
-    // levels, small enough that its indices and outputs stay in L2 while the chunk is evaluated in
-    // mask order, and that TbbEvaluator's blocks (1024-2048 stencils), which evaluate a chunk they
-    // only partly cover in table order, mostly cover whole chunks.
+    // Stencils of a stretch per chunk at most (chunks end at its multiples): big enough for groups
+    // of ~20 stencils on a mixed mesh's levels, small enough that a chunk's indices and outputs
+    // stay in L2 while it is evaluated in mask order. A range that covers only part of a chunk
+    // evaluates that part in table order.
     static constexpr int kChunk = 256;
 
     // Keeps a pointer to `table`: the table must outlive this object and keep its stencils; the
