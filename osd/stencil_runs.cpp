@@ -27,24 +27,27 @@ StencilRuns::StencilRuns(const StencilTable& table) : table_(&table), numStencil
 // weights) in the order the masks first appear, table order inside a group.
 void StencilRuns::addStretch(int first, int end) {
     const StencilTable& t = *table_;
+    std::vector<int> groupOf, filled;  // per stencil of the chunk its group; per group the stencils placed
     for (int chunk = first, chunkEnd; chunk < end; chunk = chunkEnd) {
         chunkEnd = std::min(end, (chunk / kChunk + 1) * kChunk);
         const int firstGroup = int(groups_.size());
         runs_.push_back({chunk, chunkEnd - chunk, 0, -1, firstGroup});
-        for (int i = chunk; i < chunkEnd; ++i) {  // the groups' sizes, and each stencil's group
+        groupOf.resize(std::size_t(chunkEnd - chunk));
+        for (int i = chunk; i < chunkEnd; ++i) {  // each stencil's group, counted
             int g = firstGroup;
-            while (g < int(groups_.size()) && (groups_[g].weightOffset != t.weightOffsets[i] || groups_[g].size != t.size(i)))
+            while (g < int(groups_.size()) &&
+                   (groups_[g].weightOffset != t.weightOffsets[i] || groups_[g].size != t.size(i)))
                 ++g;
             if (g == int(groups_.size())) groups_.push_back({0, 0, t.size(i), t.weightOffsets[i]});
             ++groups_[g].count;
+            groupOf[i - chunk] = g;
         }
-        const int base = int(order_.size());
-        for (int g = firstGroup, at = base; g < int(groups_.size()); at += groups_[g].count, ++g) groups_[g].first = at;
+        for (int g = firstGroup, at = int(order_.size()); g < int(groups_.size()); at += groups_[g].count, ++g)
+            groups_[g].first = at;
         order_.resize(order_.size() + std::size_t(chunkEnd - chunk));
-        std::vector<int> filled(groups_.size() - firstGroup, 0);
+        filled.assign(groups_.size() - firstGroup, 0);
         for (int i = chunk; i < chunkEnd; ++i) {
-            int g = firstGroup;
-            while (groups_[g].weightOffset != t.weightOffsets[i] || groups_[g].size != t.size(i)) ++g;
+            const int g = groupOf[i - chunk];
             order_[groups_[g].first + filled[g - firstGroup]++] = i;
         }
     }
