@@ -115,7 +115,9 @@ void evalGroupOfSize(const float* src, long srcStride, float* dst, long dstStrid
     case 10: evalGroup<Element, 10>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
     case 11: evalGroup<Element, 11>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
     case 12: evalGroup<Element, 12>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
-    default: evalGroupAnySize<Element>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w, g.size); break;
+    default:
+        evalGroupAnySize<Element>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w, g.size);
+        break;
     }
 }
 

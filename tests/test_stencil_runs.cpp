@@ -1,6 +1,7 @@
-// StencilRuns (osd/stencil_runs.h): its runs and chunks cover the table in order, the chunks' groups
-// list each stencil once, all agree with the table's per-stencil arrays, and evaluating through them gives the table's own bits on CpuEvaluator and
-// TbbEvaluator, for every width, padded layouts and ranges that start and end inside runs.
+// StencilRuns (osd/stencil_runs.h): its runs and chunks cover the table in order, the chunks'
+// groups list each stencil once, all agree with the table's per-stencil arrays, and evaluating
+// through them gives the table's own bits on CpuEvaluator and TbbEvaluator, for every width,
+// padded layouts and ranges that start and end inside runs and chunks.
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
