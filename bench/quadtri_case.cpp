@@ -66,7 +66,7 @@ void QuadtriCase::eval(std::vector<std::vector<float>>& levels, int width, bool 
         if (throughTables)
             Evaluator::EvalStencils(levels[L - 1].data(), desc, levels[L].data(), desc, refiner_->levelStencils(L));
         else
-            Evaluator::EvalStencils(levels[L - 1].data(), desc, levels[L].data(), desc, runs_[L - 1]);
+            Evaluator::EvalStencilRuns(levels[L - 1].data(), desc, levels[L].data(), desc, runs_[L - 1]);
 }
 
 void QuadtriCase::prepare() {

@@ -17,8 +17,8 @@ void CpuEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
                           detail::stencilArrays(table), start, end);
 }
 
-void CpuEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
-                                const BufferDescriptor& dstDesc, const StencilRuns& runs, int start, int end) {
+void CpuEvaluator::EvalStencilRuns(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const StencilRuns& runs, int start, int end) {
     const kernels::StencilRunArrays arrays = detail::stencilRunArrays(runs);
     if (!detail::checkEvalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, runs.numStencils(), start, end))
         return;

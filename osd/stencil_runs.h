@@ -4,8 +4,8 @@
 // short runs (a mixed mesh's Schaefer-Warren levels) sorted by mask chunk by chunk, so that the
 // loop keeps its weights in registers and its branches predictable there too
 // (docs/stencil_kernel.md). Built once from a table (a pass over its per-stencil arrays), then
-// passed to CpuEvaluator::EvalStencils or TbbEvaluator::EvalStencils in place of the table; the
-// results are bitwise those of the table itself.
+// passed to CpuEvaluator::EvalStencilRuns or TbbEvaluator::EvalStencilRuns in place of the
+// table; the results are bitwise those of the table itself.
 #pragma once
 
 #include <cstddef>

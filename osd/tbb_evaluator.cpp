@@ -47,8 +47,8 @@ void TbbEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
               [&](int b, int e) { kernels::evalStencils(s, srcStride, d, dstStride, width, arrays, b, e); });
 }
 
-void TbbEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
-                                const BufferDescriptor& dstDesc, const StencilRuns& runs, int start, int end) {
+void TbbEvaluator::EvalStencilRuns(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const StencilRuns& runs, int start, int end) {
     const kernels::StencilRunArrays arrays = detail::stencilRunArrays(runs);
     if (!detail::checkEvalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, runs.numStencils(), start, end))
         return;

@@ -131,7 +131,7 @@ TEST(StencilRuns, CpuEvaluatorGivesTheTablesBits) {
     for (const Case& c : kCases) {
         const std::unique_ptr<Refiner> refiner = refinedTorus(c);
         for (int L = 1; L <= kLevels; ++L)
-            expectTheTablesBits(refiner->levelStencils(L), CpuEvaluator::EvalStencils,
+            expectTheTablesBits(refiner->levelStencils(L), CpuEvaluator::EvalStencilRuns,
                                 std::string(c.name) + " level " + std::to_string(L));
     }
 }
@@ -143,7 +143,7 @@ TEST(StencilRuns, TbbEvaluatorGivesTheTablesBits) {
             tbb::task_arena arena(threads);
             arena.execute([&] {
                 for (int L = 1; L <= kLevels; ++L)
-                    expectTheTablesBits(refiner->levelStencils(L), TbbEvaluator::EvalStencils,
+                    expectTheTablesBits(refiner->levelStencils(L), TbbEvaluator::EvalStencilRuns,
                                         std::string(c.name) + " level " + std::to_string(L) + ", " +
                                             std::to_string(threads) + " threads");
             });
@@ -156,13 +156,13 @@ TEST(StencilRuns, RejectATableThatChangedAndBadRanges) {
     const StencilRuns runs(t);
     std::vector<float> src(64, 1.0f), dst(64);
     const BufferDescriptor d(0, 3, 3);
-    EXPECT_THROW(CpuEvaluator::EvalStencils(src.data(), d, dst.data(), d, runs, 0, 4), std::invalid_argument);
-    EXPECT_THROW(TbbEvaluator::EvalStencils(src.data(), d, dst.data(), d, runs, 2, 1), std::invalid_argument);
+    EXPECT_THROW(CpuEvaluator::EvalStencilRuns(src.data(), d, dst.data(), d, runs, 0, 4), std::invalid_argument);
+    EXPECT_THROW(TbbEvaluator::EvalStencilRuns(src.data(), d, dst.data(), d, runs, 2, 1), std::invalid_argument);
     t.indices.push_back(0);  // one more stencil of one entry
     t.offsets.push_back(int(t.indices.size()));
     t.weightOffsets.push_back(0);
-    EXPECT_THROW(CpuEvaluator::EvalStencils(src.data(), d, dst.data(), d, runs), std::invalid_argument);
-    EXPECT_THROW(TbbEvaluator::EvalStencils(src.data(), d, dst.data(), d, runs), std::invalid_argument);
+    EXPECT_THROW(CpuEvaluator::EvalStencilRuns(src.data(), d, dst.data(), d, runs), std::invalid_argument);
+    EXPECT_THROW(TbbEvaluator::EvalStencilRuns(src.data(), d, dst.data(), d, runs), std::invalid_argument);
 }
 
 }  // namespace

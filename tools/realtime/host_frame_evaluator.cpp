@@ -30,10 +30,7 @@ HostFrameEvaluator::HostFrameEvaluator(const SurfaceTables& tables, bool threade
 void HostFrameEvaluator::evaluate(PhaseTimes& times) {
     if (!cage_) throw std::logic_error("HostFrameEvaluator::evaluate: no cage set");
     const BufferDescriptor xyz(0, 3, 3);
-    using EvalRuns = void (*)(const float*, const BufferDescriptor&, float*, const BufferDescriptor&,
-                              const StencilRuns&, int, int);
-    const EvalRuns stencils = threaded_ ? static_cast<EvalRuns>(TbbEvaluator::EvalStencils)
-                                        : static_cast<EvalRuns>(CpuEvaluator::EvalStencils);
+    auto stencils = threaded_ ? TbbEvaluator::EvalStencilRuns : CpuEvaluator::EvalStencilRuns;
     auto limit = threaded_ ? TbbEvaluator::EvalLimitStencils : CpuEvaluator::EvalLimitStencils;
 
     Clock::time_point start = Clock::now();
