@@ -1,6 +1,7 @@
 // One bench case on quadtri's side: the analyzer build (on one thread and on all), the per-level
 // tables, and their serial and threaded evaluation level by level into preallocated buffers, of
-// 3-float positions and of the same positions padded to 4 floats.
+// 3-float positions and of the same positions padded to 4 floats, through each level's StencilRuns
+// (built once, as an application sets up its evaluation; untimed).
 #pragma once
 
 #include <memory>
@@ -10,6 +11,7 @@
 #include "bench/torus.h"
 #include <quadtri/far/options.h>
 #include <quadtri/far/refiner.h>
+#include <quadtri/osd/stencil_runs.h>
 
 namespace quadtri::bench {
 
@@ -20,8 +22,9 @@ public:
     QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level, bool factorized);
     ~QuadtriCase();
 
-    // The untimed first run: builds the refiner, evaluates serially and threaded at both widths,
-    // and checks that the four evaluations agree bitwise (std::runtime_error if not); the
+    // The untimed first run: builds the refiner and the runs, evaluates serially through the
+    // tables, then through the runs serially and threaded at both widths, and checks that the
+    // evaluations agree bitwise (std::runtime_error if not); the
     // case's memory is that of the build and the 3-float serial buffers.
     void prepare();
 
@@ -41,13 +44,15 @@ private:
         StencilTable table;
     };
     FactorizedBuild buildFactorized() const;
+    // Levels 1..level_ through runs_ (or through the tables themselves).
     template <class Evaluator>
-    void eval(std::vector<std::vector<float>>& levels, int width);
+    void eval(std::vector<std::vector<float>>& levels, int width, bool throughTables = false);
 
     const ControlMesh& mesh_;
     Options options_;
     int level_;
     std::unique_ptr<Refiner> refiner_;
+    std::vector<StencilRuns> runs_;  // runs_[L - 1]: levelStencils(L)'s
     // Per level: level 0 is the control positions; level L >= 1 is written by levelStencils(L).
     // padded_: the same at 4 floats a vertex (the fourth 0).
     std::vector<std::vector<float>> serial_, threaded_, padded_;

@@ -32,10 +32,15 @@ inline Timing summarize(std::vector<double> values) {
     return {middle, values.front(), values.back()};
 }
 
-// One untimed warm-up call of f, then `reps` timed calls.
+// Untimed warm-up calls of f for 100 ms (at least one), then `reps` timed calls. One warm-up call
+// is not enough after the builds a case times first: on the 2-core VM the first evaluation of a
+// cache-sized level (torus100_quad level 3, ~35 MB) then stays 1.5-2x slower for about a dozen
+// calls, whatever its width (docs/stencil_kernel.md).
 template <class F>
 Timing timeMs(int reps, F&& f) {
-    f();
+    const Stopwatch warmUp;
+    do f();
+    while (warmUp.elapsedMs() < 100.0);
     std::vector<double> times;
     for (int r = 0; r < reps; ++r) {
         Stopwatch watch;

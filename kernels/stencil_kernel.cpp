@@ -24,6 +24,21 @@ void evalStencils(const float* src, int srcStride, float* dst, int dstStride, in
     evalStencilsPortable(src, srcStride, dst, dstStride, width, t, start, end);
 }
 
+void evalStencilRuns(const float* src, int srcStride, float* dst, int dstStride, int width,
+                     const StencilRunArrays& r, int start, int end) {
+#if defined(QUADTRI_HAVE_AVX2_KERNELS)
+    if ((width == 3 || width == 4) && stencilKernelUsesAvx2()) {
+        if (width == 3)
+            evalStencilRuns3Avx2(src, srcStride, dst, dstStride, r, start, end);
+        else
+            evalStencilRuns4Avx2(src, srcStride, dst, dstStride, r, start, end);
+        return;
+    }
+#endif
+    // The portable loops read every stencil's arrays anyway: the runs change nothing for them.
+    evalStencilsPortable(src, srcStride, dst, dstStride, width, r.table, start, end);
+}
+
 }  // namespace kernels
 }  // namespace v0
 }  // namespace quadtri

@@ -5,6 +5,8 @@
 // says what each path costs.
 #pragma once
 
+#include <quadtri/osd/stencil_runs.h>
+
 namespace quadtri {
 inline namespace v0 {
 namespace kernels {
@@ -14,6 +16,15 @@ struct StencilArrays {
     const int* indices;
     const int* weightOffsets;  // numStencils
     const float* weights;
+};
+
+// A StencilRuns' runs over its table's arrays.
+struct StencilRunArrays {
+    StencilArrays table;
+    const StencilRun* runs;
+    int numRuns;
+    const StencilGroup* groups;
+    const int* order;
 };
 
 // Width known at compile time: the accumulator lives in registers and the inner loop unrolls.
@@ -73,6 +84,11 @@ inline void evalStencilsPortable(const float* src, int srcStride, float* dst, in
 void evalStencils(const float* src, int srcStride, float* dst, int dstStride, int width, const StencilArrays& t,
                   int start, int end);
 
+// evalStencils over the runs of a StencilRuns: the same bits (the runs only spare the loop the
+// per-stencil arrays inside them), stencils [start, end) of any width.
+void evalStencilRuns(const float* src, int srcStride, float* dst, int dstStride, int width,
+                     const StencilRunArrays& r, int start, int end);
+
 // Whether evalStencils takes the AVX2 + FMA loop for widths 3 and 4 on this CPU.
 bool stencilKernelUsesAvx2();
 
@@ -81,6 +97,10 @@ void evalStencils3Avx2(const float* src, int srcStride, float* dst, int dstStrid
                        int end);
 void evalStencils4Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
                        int end);
+void evalStencilRuns3Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
+                          int start, int end);
+void evalStencilRuns4Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
+                          int start, int end);
 
 }  // namespace kernels
 }  // namespace v0

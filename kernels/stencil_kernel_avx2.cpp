@@ -8,7 +8,8 @@
 // - stencils taken in runs that share one pooled weight sequence (after a level or two nearly
 //   every stencil is one of a handful of regular masks, in long runs: face points, then edge
 //   points, then vertex points): the run's weights sit in registers, and the loop is unrolled
-//   to the mask sizes of 3 to 12 entries, so a run costs one branch.
+//   to the mask sizes of 3 to 12 entries, so a run costs one branch. Given a StencilRuns' run
+//   list, the loop reads neither offsets nor weightOffsets inside its runs.
 // Width 3 and width 4 do the same float operations on lanes 0-2, so padded positions give the
 // same bits as packed ones. Only names local to this file and the struct layouts are used: an
 // inline function of a shared header instantiated here would carry AVX2 instructions and could
@@ -22,12 +23,11 @@ inline namespace v0 {
 namespace kernels {
 namespace {
 
-// x, y, z of an element that is only 4-byte aligned; lane 3 is 0. No byte past z is read.
+// x, y, z of an element that is only 4-byte aligned; lane 3 is 0. A masked load: the bytes past z
+// are not read (a masked-out lane never faults), and it is one load where two loads and a shuffle
+// were 10-15 % slower per 3-float level (docs/stencil_kernel.md).
 struct Xyz {
-    static __m128 load(const float* p) {
-        const __m128 xy = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)));
-        return _mm_insert_ps(xy, _mm_load_ss(p + 2), 0x20);
-    }
+    static __m128 load(const float* p) { return _mm_maskload_ps(p, _mm_setr_epi32(-1, -1, -1, 0)); }
     static void store(float* d, __m128 v) {
         _mm_storel_epi64(reinterpret_cast<__m128i*>(d), _mm_castps_si128(v));
         _mm_store_ss(d + 2, _mm_movehl_ps(v, v));
@@ -75,6 +75,72 @@ void evalRunAnySize(const float* src, long srcStride, float* dst, long dstStride
         Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, idx, fromPool, n));
 }
 
+// The stencils ids[0, count) of a group, N entries each with the pooled weights w: as evalRun,
+// each stencil's indices found through offsets and its output written at its own row.
+template <class Element, int N>
+void evalGroup(const float* src, long srcStride, float* dst, long dstStride, const int* offsets, const int* indices,
+               const int* ids, int count, const float* w) {
+    __m128 weight[N];
+    for (int k = 0; k < N; ++k) weight[k] = _mm_broadcast_ss(w + k);
+    const auto inRegister = [&](int k) { return weight[k]; };
+    for (int q = 0; q < count; ++q) {
+        const long i = ids[q];
+        Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, indices + offsets[i], inRegister, N));
+    }
+}
+
+template <class Element>
+void evalGroupAnySize(const float* src, long srcStride, float* dst, long dstStride, const int* offsets,
+                      const int* indices, const int* ids, int count, const float* w, int n) {
+    const auto fromPool = [w](int k) { return _mm_broadcast_ss(w + k); };
+    for (int q = 0; q < count; ++q) {
+        const long i = ids[q];
+        Element::store(dst + i * dstStride, weightedSum<Element>(src, srcStride, indices + offsets[i], fromPool, n));
+    }
+}
+
+template <class Element>
+void evalGroupOfSize(const float* src, long srcStride, float* dst, long dstStride, const StencilArrays& t,
+                     const int* ids, const StencilGroup& g) {
+    const int *offsets = t.offsets, *indices = t.indices;
+    const float* w = t.weights + g.weightOffset;
+    switch (g.size) {
+    case 3: evalGroup<Element, 3>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 4: evalGroup<Element, 4>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 5: evalGroup<Element, 5>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 6: evalGroup<Element, 6>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 7: evalGroup<Element, 7>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 8: evalGroup<Element, 8>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 9: evalGroup<Element, 9>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 10: evalGroup<Element, 10>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 11: evalGroup<Element, 11>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    case 12: evalGroup<Element, 12>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w); break;
+    default:
+        evalGroupAnySize<Element>(src, srcStride, dst, dstStride, offsets, indices, ids, g.count, w, g.size);
+        break;
+    }
+}
+
+// Stencils [i, runEnd) of n entries each sharing the weights w, their indices consecutive from idx:
+// unrolled for every size of the schemes' regular and near-regular masks.
+template <class Element>
+void evalRunOfSize(const float* src, long srcStride, float* dst, long dstStride, const int* idx, const float* w, int n,
+                   int i, int runEnd) {
+    switch (n) {
+    case 3: evalRun<Element, 3>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 4: evalRun<Element, 4>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 5: evalRun<Element, 5>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 6: evalRun<Element, 6>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 7: evalRun<Element, 7>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 8: evalRun<Element, 8>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 9: evalRun<Element, 9>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 10: evalRun<Element, 10>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 11: evalRun<Element, 11>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    case 12: evalRun<Element, 12>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
+    default: evalRunAnySize<Element>(src, srcStride, dst, dstStride, idx, w, n, i, runEnd); break;
+    }
+}
+
 template <class Element>
 void evalStencilsSimd(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
                       int end) {
@@ -89,21 +155,44 @@ void evalStencilsSimd(const float* src, int srcStride, float* dst, int dstStride
         int runEnd = i + 1;
         while (runEnd < end && weightOffsets[runEnd] == weightOffset && offsets[runEnd + 1] - offsets[runEnd] == n)
             ++runEnd;
-        const int* idx = indices + first;
-        const float* w = weights + weightOffset;
-        switch (n) {  // every size of the schemes' regular and near-regular masks, unrolled
-        case 3: evalRun<Element, 3>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 4: evalRun<Element, 4>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 5: evalRun<Element, 5>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 6: evalRun<Element, 6>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 7: evalRun<Element, 7>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 8: evalRun<Element, 8>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 9: evalRun<Element, 9>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 10: evalRun<Element, 10>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 11: evalRun<Element, 11>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        case 12: evalRun<Element, 12>(src, srcStride, dst, dstStride, idx, w, i, runEnd); break;
-        default: evalRunAnySize<Element>(src, srcStride, dst, dstStride, idx, w, n, i, runEnd); break;
-        }
+        evalRunOfSize<Element>(src, srcStride, dst, dstStride, indices + first, weights + weightOffset, n, i, runEnd);
+        i = runEnd;
+    }
+}
+
+// The index of the run holding stencil i (runs in stencil order, the first starting at 0).
+int runHolding(const StencilRun* runs, int numRuns, int i) {
+    int lo = 0, hi = numRuns - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if (runs[mid].firstStencil <= i)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
+}
+
+// The same runs as evalStencilsSimd finds, but taken from the run list: inside a run no per-stencil
+// array is read. A chunk of a stretch of short runs goes group by group where [start, end) covers
+// it whole, else (its part in range) through evalStencilsSimd.
+template <class Element>
+void evalStencilRunsSimd(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
+                         int start, int end) {
+    const StencilArrays t = r.table;
+    const StencilRun* runs = r.runs;
+    for (int k = runHolding(runs, r.numRuns, start), i = start; i < end; ++k) {
+        const StencilRun run = runs[k];
+        const int runEnd = run.firstStencil + run.numStencils < end ? run.firstStencil + run.numStencils : end;
+        if (run.firstGroup >= 0 && i == run.firstStencil && runEnd == run.firstStencil + run.numStencils)
+            for (int g = run.firstGroup, done = 0; done < run.numStencils; done += r.groups[g].count, ++g)
+                evalGroupOfSize<Element>(src, srcStride, dst, dstStride, t, r.order + r.groups[g].first, r.groups[g]);
+        else if (run.firstGroup >= 0)
+            evalStencilsSimd<Element>(src, srcStride, dst, dstStride, t, i, runEnd);
+        else
+            evalRunOfSize<Element>(src, srcStride, dst, dstStride,
+                                   t.indices + t.offsets[run.firstStencil] + long(i - run.firstStencil) * run.size,
+                                   t.weights + run.weightOffset, run.size, i, runEnd);
         i = runEnd;
     }
 }
@@ -118,6 +207,16 @@ void evalStencils3Avx2(const float* src, int srcStride, float* dst, int dstStrid
 void evalStencils4Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilArrays& t, int start,
                        int end) {
     evalStencilsSimd<Xyzw>(src, srcStride, dst, dstStride, t, start, end);
+}
+
+void evalStencilRuns3Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
+                          int start, int end) {
+    evalStencilRunsSimd<Xyz>(src, srcStride, dst, dstStride, r, start, end);
+}
+
+void evalStencilRuns4Avx2(const float* src, int srcStride, float* dst, int dstStride, const StencilRunArrays& r,
+                          int start, int end) {
+    evalStencilRunsSimd<Xyzw>(src, srcStride, dst, dstStride, r, start, end);
 }
 
 }  // namespace kernels

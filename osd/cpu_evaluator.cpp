@@ -17,6 +17,15 @@ void CpuEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
                           detail::stencilArrays(table), start, end);
 }
 
+void CpuEvaluator::EvalStencilRuns(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const StencilRuns& runs, int start, int end) {
+    const kernels::StencilRunArrays arrays = detail::stencilRunArrays(runs);
+    if (!detail::checkEvalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, runs.numStencils(), start, end))
+        return;
+    kernels::evalStencilRuns(src + srcDesc.offset, srcDesc.stride, dst + dstDesc.offset, dstDesc.stride,
+                             dstDesc.length, arrays, start, end);
+}
+
 void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
                                    const BufferDescriptor& dstDesc, const MeshNormalTable& table, int start, int end) {
     if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,

@@ -5,6 +5,7 @@
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
 #include <quadtri/osd/buffer_descriptor.h>
+#include <quadtri/osd/stencil_runs.h>
 
 namespace quadtri {
 inline namespace v0 {
@@ -19,6 +20,14 @@ public:
     static void EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
                              const BufferDescriptor& dstDesc, const StencilTable& table, int start = 0,
                              int end = -1);
+
+    // EvalStencils through the runs of a table (StencilRuns, built once from it): the same bits,
+    // without reading the table's per-stencil arrays inside a run (docs/stencil_kernel.md). Also
+    // throws std::invalid_argument when the table's stencil count changed since the runs were built.
+    // (Its own name, not an EvalStencils overload, so that &EvalStencils stays unambiguous.)
+    static void EvalStencilRuns(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                const BufferDescriptor& dstDesc, const StencilRuns& runs, int start = 0,
+                                int end = -1);
 
     // Area-weighted vertex normals of one level (MeshNormalTable): normals of vertices [start,
     // end) (end < 0: all) from that level's 3-float positions, unit length, (0, 0, 0) for a

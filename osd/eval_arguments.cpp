@@ -24,6 +24,15 @@ bool checkEvalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool d
     return true;
 }
 
+kernels::StencilRunArrays stencilRunArrays(const StencilRuns& runs) {
+    if (runs.table().numStencils() != runs.numStencils())
+        throw std::invalid_argument("EvalStencils: the table has " + std::to_string(runs.table().numStencils()) +
+                                    " stencils, its StencilRuns were built for " +
+                                    std::to_string(runs.numStencils()) + ": build them again");
+    return kernels::StencilRunArrays{stencilArrays(runs.table()), runs.runs().data(), int(runs.runs().size()),
+                                     runs.groups().data(), runs.order().data()};
+}
+
 namespace {
 
 const char* const kInvalidDescriptor = "invalid BufferDescriptor (need length > 0, stride >= length, offset >= 0)";

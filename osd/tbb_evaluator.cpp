@@ -47,6 +47,24 @@ void TbbEvaluator::EvalStencils(const float* src, const BufferDescriptor& srcDes
               [&](int b, int e) { kernels::evalStencils(s, srcStride, d, dstStride, width, arrays, b, e); });
 }
 
+void TbbEvaluator::EvalStencilRuns(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const StencilRuns& runs, int start, int end) {
+    const kernels::StencilRunArrays arrays = detail::stencilRunArrays(runs);
+    if (!detail::checkEvalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, runs.numStencils(), start, end))
+        return;
+    const float* s = src + srcDesc.offset;
+    float* d = dst + dstDesc.offset;
+    const int srcStride = srcDesc.stride, dstStride = dstDesc.stride, width = dstDesc.length;
+    // Blocks of whole chunks (kChunk-aligned, so a stretch's chunks are evaluated in mask order);
+    // each block finds its first run by bisection, a few dozen loads for thousands of stencils.
+    constexpr int chunk = StencilRuns::kChunk;
+    const int firstUnit = start / chunk, lastUnit = (end + chunk - 1) / chunk;
+    forBlocks(firstUnit, lastUnit, kGrain / chunk, [&](int u0, int u1) {
+        const int b = u0 * chunk > start ? u0 * chunk : start, e = u1 * chunk < end ? u1 * chunk : end;
+        kernels::evalStencilRuns(s, srcStride, d, dstStride, width, arrays, b, e);
+    });
+}
+
 void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
                                    const BufferDescriptor& dstDesc, const MeshNormalTable& table, int start, int end) {
     if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,

@@ -6,6 +6,7 @@
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
 #include <quadtri/osd/buffer_descriptor.h>
+#include <quadtri/osd/stencil_runs.h>
 
 namespace quadtri {
 inline namespace v0 {
@@ -18,6 +19,14 @@ public:
     static void EvalStencils(const float* src, const BufferDescriptor& srcDesc, float* dst,
                              const BufferDescriptor& dstDesc, const StencilTable& table, int start = 0,
                              int end = -1);
+
+    // EvalStencils through the runs of a table (StencilRuns, built once from it): the same bits,
+    // without reading the table's per-stencil arrays inside a run (docs/stencil_kernel.md). Also
+    // throws std::invalid_argument when the table's stencil count changed since the runs were built.
+    // (Its own name, not an EvalStencils overload, so that &EvalStencils stays unambiguous.)
+    static void EvalStencilRuns(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                const BufferDescriptor& dstDesc, const StencilRuns& runs, int start = 0,
+                                int end = -1);
 
     // Same contract as CpuEvaluator::EvalMeshNormals, bit-identical results.
     static void EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,

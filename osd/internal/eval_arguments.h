@@ -10,6 +10,7 @@
 #include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include <quadtri/osd/buffer_descriptor.h>
+#include <quadtri/osd/stencil_runs.h>
 
 namespace quadtri {
 inline namespace v0 {
@@ -67,6 +68,10 @@ inline kernels::StencilArrays stencilArrays(const StencilTable& table) {
     return kernels::StencilArrays{table.offsets.data(), table.indices.data(), table.weightOffsets.data(),
                                   table.weights.data()};
 }
+
+// A StencilRuns' arrays as the kernel reads them; throws std::invalid_argument where its table's
+// stencil count changed since the runs were built (they would no longer cover it).
+kernels::StencilRunArrays stencilRunArrays(const StencilRuns& runs);
 
 inline kernels::LimitStencilArrays limitArrays(const LimitStencilTable& table) {
     return kernels::LimitStencilArrays{table.sizes.data(), table.offsets.data(), table.indices.data(),

@@ -21,19 +21,22 @@ double msSince(Clock::time_point start) {
 HostFrameEvaluator::HostFrameEvaluator(const SurfaceTables& tables, bool threaded)
     : tables_(tables), threaded_(threaded), positions_(3 * std::size_t(tables.numPoints)),
       normals_(3 * std::size_t(tables.numPoints)) {
-    for (const StencilTable& level : tables.levels) levels_.emplace_back(3 * std::size_t(level.numStencils()));
+    for (const StencilTable& level : tables.levels) {
+        runs_.emplace_back(level);
+        levels_.emplace_back(3 * std::size_t(level.numStencils()));
+    }
 }
 
 void HostFrameEvaluator::evaluate(PhaseTimes& times) {
     if (!cage_) throw std::logic_error("HostFrameEvaluator::evaluate: no cage set");
     const BufferDescriptor xyz(0, 3, 3);
-    auto stencils = threaded_ ? TbbEvaluator::EvalStencils : CpuEvaluator::EvalStencils;
+    auto stencils = threaded_ ? TbbEvaluator::EvalStencilRuns : CpuEvaluator::EvalStencilRuns;
     auto limit = threaded_ ? TbbEvaluator::EvalLimitStencils : CpuEvaluator::EvalLimitStencils;
 
     Clock::time_point start = Clock::now();
     const float* source = cage_;
     for (std::size_t L = 0; L < levels_.size(); ++L) {
-        stencils(source, xyz, levels_[L].data(), xyz, tables_.levels[L], 0, -1);
+        stencils(source, xyz, levels_[L].data(), xyz, runs_[L], 0, -1);
         source = levels_[L].data();
     }
     const bool onePass = tables_.route == TableRoute::FactorizedLimit;

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include <quadtri/osd/stencil_runs.h>
 #include "tools/realtime/frame_evaluator.h"
 #include "tools/realtime/surface_tables.h"
 
@@ -27,6 +28,7 @@ private:
     const SurfaceTables& tables_;
     bool threaded_;
     const float* cage_ = nullptr;
+    std::vector<StencilRuns> runs_;           // of tables_.levels, what the frame loop evaluates
     std::vector<std::vector<float>> levels_;  // LevelsThenLimit: levels 1..N
     std::vector<float> positions_, normals_;
 };
