@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "far/internal/crease.h"
+#include "far/internal/fresh_pages.h"
 #include "far/internal/topology_builder.h"
 
 namespace quadtri {
@@ -109,10 +110,10 @@ private:
         const int nf = p_.numFaces(), numChildFaces = firstChildFace_[nf];
         // A face split around a face point makes n quads (4n child corners), a triangle split
         // in four four triangles (12): 4 child corners per parent corner either way.
-        c_.faceOffsets.resize(std::size_t(numChildFaces) + 1);
-        c_.faceVerts.resize(4 * p_.faceVerts.size());
-        c_.faceHole.resize(numChildFaces);
-        if (WithEdges) c_.faceEdges.resize(c_.faceVerts.size());
+        resizeFresh(c_.faceOffsets, std::size_t(numChildFaces) + 1);
+        resizeFresh(c_.faceVerts, 4 * p_.faceVerts.size());
+        resizeFresh(c_.faceHole, numChildFaces);
+        if (WithEdges) resizeFresh(c_.faceEdges, c_.faceVerts.size());
         forEach(nf, [&](int f) {
             const IndexSpan corners = p_.verticesOfFace(f), sides = p_.edgesOfFace(f);
             const int n = corners.size(), first = firstChildFace_[f];
@@ -150,7 +151,7 @@ private:
 
     void edges() {
         const int ne = p_.numEdges();
-        c_.edgeVerts.resize(2 * std::size_t(firstInterior_.back()));
+        resizeFresh(c_.edgeVerts, 2 * std::size_t(firstInterior_.back()));
         forEach(ne, [&](int e) {
             const int ep = num_.edgePoint(e);
             c_.edgeVerts[4 * std::size_t(e) + 0] = num_.vertexPoint(p_.edgeVerts[2 * e]);
@@ -173,7 +174,7 @@ private:
     // edges: the two child faces beside them.
     void edgeFaces() {
         const int ne = p_.numEdges(), nf = p_.numFaces(), numChildEdges = c_.numEdges();
-        c_.edgeFaceOffsets.resize(std::size_t(numChildEdges) + 1);
+        resizeFresh(c_.edgeFaceOffsets, std::size_t(numChildEdges) + 1);
         const int interiorBase = 2 * int(p_.edgeFaces.size());
         forEach(ne, [&](int e) {
             const int b = p_.edgeFaceOffsets[e], n = p_.edgeFaceCount(e);
@@ -182,7 +183,7 @@ private:
         });
         forEach(numChildEdges - 2 * ne, [&](int k) { c_.edgeFaceOffsets[2 * ne + k] = interiorBase + 2 * k; });
         c_.edgeFaceOffsets[numChildEdges] = interiorBase + 2 * (numChildEdges - 2 * ne);
-        c_.edgeFaces.resize(c_.edgeFaceOffsets[numChildEdges]);
+        resizeFresh(c_.edgeFaces, c_.edgeFaceOffsets[numChildEdges]);
         forEach(ne, [&](int e) {
             int* out = c_.edgeFaces.data() + c_.edgeFaceOffsets[2 * e];
             const int n = p_.edgeFaceCount(e), a = p_.edgeVerts[2 * e];
@@ -214,11 +215,11 @@ private:
     template <typename Count, typename Fill>
     void incidence(std::vector<int>& offsets, std::vector<int>& list, const Count& count, const Fill& fill) {
         const int nv = c_.numVertices;
-        offsets.resize(std::size_t(nv) + 1);
+        resizeFresh(offsets, std::size_t(nv) + 1);
         offsets[0] = 0;
         forEach(nv, [&](int v) { offsets[v + 1] = count(v); });
         for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
-        list.resize(offsets[nv]);
+        resizeFresh(list, offsets[nv]);
         forEach(nv, [&](int v) { fill(v, list.data() + offsets[v]); });
     }
 
@@ -322,8 +323,8 @@ private:
     // their edge's, face points none. When triangles split into quads every child is a quad, so
     // no seam is left.
     void flags() {
-        c_.edgeFlags.assign(c_.numEdges(), 0);
-        c_.vertFlags.assign(c_.numVertices, 0);
+        assignFresh(c_.edgeFlags, c_.numEdges(), 0);
+        assignFresh(c_.vertFlags, c_.numVertices, 0);
         const bool seamsStay = num_.triangleSplit == TriangleSplit::FourTriangles;
         const uint8_t edgeKept = seamsStay ? 0xff : uint8_t(~kEdgeSeam);
         const uint8_t vertexKept = seamsStay ? 0xff : uint8_t(~kVertexSeam);
@@ -335,8 +336,8 @@ private:
                                               (f & kEdgeSeam ? kVertexSeam : 0);
         });
         forEach(p_.numVertices, [&](int v) { c_.vertFlags[num_.vertexPoint(v)] = p_.vertFlags[v] & vertexKept; });
-        c_.edgeSharpness.assign(c_.numEdges(), 0.0f);
-        c_.vertSharpness.assign(c_.numVertices, 0.0f);
+        assignFresh(c_.edgeSharpness, c_.numEdges(), 0.0f);
+        assignFresh(c_.vertSharpness, c_.numVertices, 0.0f);
     }
 
     const Topology& p_;

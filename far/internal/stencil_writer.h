@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "far/internal/fresh_pages.h"
 #include "far/internal/sparse_accumulator.h"
 #include <quadtri/far/stencil_table.h>
 #include "far/internal/weight_pool.h"
@@ -57,9 +58,9 @@ public:
     // blocks through a cursor. vector::push_back and resize are not inlined here, and a call
     // per stencil was a fifth of the build.
     StencilWriter(StencilTable& table, int numStencils, std::size_t maxEntries) : table_(table) {
-        table_.offsets.assign(std::size_t(numStencils) + 1, 0);
-        table_.weightOffsets.assign(numStencils, 0);
-        table_.indices.reserve(maxEntries);
+        assignFresh(table_.offsets, std::size_t(numStencils) + 1, 0);
+        assignFresh(table_.weightOffsets, numStencils, 0);
+        reserveFresh(table_.indices, maxEntries);
     }
     void append(SparseAccumulator& acc) {
         const int n = acc.size();
