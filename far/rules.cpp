@@ -112,22 +112,26 @@ void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, 
     constexpr bool kFloat = std::is_same_v<Table, StencilTable>;
     const bool shortCut = kFloat && in.smooth && in.rules.regularMasksApply();
     RegularMasks regular(in.t);
-    int gathered[2 * RegularMasks::kMaxValence + 1];
+    constexpr int kMaxGathered = 2 * RegularMasks::kMaxValence + 1;
+    int gathered[kMaxGathered];  // the first mask of a key's vertices, compared with the rules'
     for (int c = first; c < last; ++c) {
         int n = 0, key = 0;
-        if (shortCut && c >= edgePoints) {
-            if (c < vertexPoints) {
-                const int e = c - edgePoints;
-                if (w.masks->regularEdge(e)) n = regular.edge(e, gathered, key);
-            } else {
-                const int v = c - vertexPoints;
-                if (w.masks->regularVertex(v)) n = regular.vertex(v, gathered, key);
-            }
-        }
         if constexpr (kFloat) {
-            if (n > 0 && regular.weights(key) >= 0) {
-                writer.append(gathered, n, regular.weights(key));
-                continue;
+            // Gathered straight into the table, kept there when the key's weights are known.
+            if (shortCut && c >= edgePoints) {
+                int* out = writer.nextIndices(kMaxGathered);
+                if (c < vertexPoints) {
+                    const int e = c - edgePoints;
+                    if (w.masks->regularEdge(e)) n = regular.edge(e, out, key);
+                } else {
+                    const int v = c - vertexPoints;
+                    if (w.masks->regularVertex(v)) n = regular.vertex(v, out, key);
+                }
+                if (n > 0 && regular.weights(key) >= 0) {
+                    writer.appendGathered(n, regular.weights(key));
+                    continue;
+                }
+                if (n > 0) std::copy(out, out + n, gathered);
             }
         }
         if (c < edgePoints)

@@ -75,9 +75,17 @@ public:
         table_.weightOffsets[stencils_] = previousOffset_;
         table_.offsets[++stencils_] = int(entries_);
     }
-    // Appends a stencil whose weights are already in the pool (RegularMasks).
-    void append(const int* indices, int n, int weightOffset) {
-        std::copy(indices, indices + n, extendIndices(n));
+    // Room for n indices after the last stencil, for the next stencil to be gathered in place
+    // (RegularMasks): no copy per stencil. What is written there counts only once appended.
+    int* nextIndices(int n) {
+        if (entries_ + n > table_.indices.size())
+            table_.indices.resize(std::max(table_.indices.size() + kIndexBlock, entries_ + n));
+        return table_.indices.data() + entries_;
+    }
+    // Appends the stencil of the n indices written at nextIndices(), whose weights are already in
+    // the pool.
+    void appendGathered(int n, int weightOffset) {
+        entries_ += n;
         table_.weightOffsets[stencils_] = weightOffset;
         table_.offsets[++stencils_] = int(entries_);
     }
@@ -113,9 +121,7 @@ private:
     static constexpr std::size_t kIndexBlock = 16384;
 
     int* extendIndices(std::size_t n) {
-        if (entries_ + n > table_.indices.size())
-            table_.indices.resize(std::max(table_.indices.size() + kIndexBlock, entries_ + n));
-        int* out = table_.indices.data() + entries_;
+        int* out = nextIndices(int(n));
         entries_ += n;
         return out;
     }
