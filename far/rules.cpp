@@ -104,7 +104,7 @@ void vertexMask(const LevelInputs& in, Worker& w, int v) {
 
 // Masks of children [first, last) in child order (face points, edge points, vertex points).
 // Float tables of smooth levels take the regular masks' short cut (regular_masks.h) where the
-// scheme allows it (SchemeRules::regularMasksApply, SchemeMasks::regularEdge / regularVertex).
+// scheme allows it (SchemeRules::regularMasksApply, SchemeMasks::regularFace / regularEdge / regularVertex).
 template <typename Table>
 void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, int last) {
     Worker w(in);
@@ -118,9 +118,12 @@ void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, 
         int n = 0, key = 0;
         if constexpr (kFloat) {
             // Gathered straight into the table, kept there when the key's weights are known.
-            if (shortCut && c >= edgePoints) {
+            if (shortCut) {
                 int* out = writer.nextIndices(kMaxGathered);
-                if (c < vertexPoints) {
+                if (c < edgePoints) {
+                    const int f = in.faceOfPoint[c];
+                    if (w.masks->regularFace(f)) n = regular.face(f, out, key);
+                } else if (c < vertexPoints) {
                     const int e = c - edgePoints;
                     if (w.masks->regularEdge(e)) n = regular.edge(e, out, key);
                 } else {
