@@ -210,7 +210,7 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
         buildRange(in, partWriter, split(k), split(k + 1));
         partWriter.finish();
     });
-    for (const Table& part : rest) writer.append(part);
+    writer.append(rest);
     writer.finish();
     return table;
 }
