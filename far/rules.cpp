@@ -9,6 +9,7 @@
 #include <memory>
 #include <type_traits>
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -191,8 +192,12 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
     // growing by doubling would copy and touch the arrays several times over.
     std::size_t bound = 4 * std::size_t(t.numEdges()) + t.numVertices;
     for (int f = 0; f < t.numFaces(); ++f) bound += std::size_t(t.faceSize(f)) * (1 + 2 * t.faceSize(f));
-    const int parts =
-        std::max(1, std::min(tbb::this_task_arena::max_concurrency(), numChildren / kMinChildrenPerPart));
+    // The threads that can run: the arena's, unless a tbb::global_control allows fewer (a part
+    // per thread that cannot run would only add its join).
+    const int threads = int(std::min<std::size_t>(
+        std::size_t(tbb::this_task_arena::max_concurrency()),
+        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
+    const int parts = std::max(1, std::min(threads, numChildren / kMinChildrenPerPart));
     auto split = [&](int k) { return int(std::int64_t(numChildren) * k / parts); };
     auto partBound = [&](int k) {
         return std::size_t(double(bound) * (split(k + 1) - split(k)) / std::max(1, numChildren)) + 64;

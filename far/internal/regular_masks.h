@@ -31,14 +31,8 @@ public:
         const IndexSpan corners = t_.verticesOfFace(f);
         const int n = corners.size();
         if (n != 3 && n != 4) return 0;
-        Seen seen;
-        for (int i = 0; i < n; ++i) {
-            const int c = corners[i];
-            // Repeated corners would merge entries: left to the rules.
-            if (seen.mayHold(c) && contains(out, i, c)) return 0;
-            seen.add(c);
-            out[i] = c;
-        }
+        // Repeated corners would merge entries: left to the rules.
+        if (n == 3 ? !copyDistinct<3>(corners.begin(), out) : !copyDistinct<4>(corners.begin(), out)) return 0;
         key = kFaceKeys + (n == 3 ? 0 : 1);
         return n;
     }
@@ -49,19 +43,10 @@ public:
         const int f0 = t_.facesOfEdge(e)[0], f1 = t_.facesOfEdge(e)[1];
         const int n = t_.faceSize(f0);
         if (n != t_.faceSize(f1) || (n != 3 && n != 4) || f0 == f1) return 0;
-        out[0] = a;
-        out[1] = b;
-        int count = 2;
-        for (int f : {f0, f1})
-            for (int c : t_.verticesOfFace(f)) {  // without a branch: where a and b sit varies
-                out[count] = c;
-                count += int(c != a) & int(c != b);
-            }
-        // Two faces sharing more than the edge would merge entries: left to the rules.
-        Seen seen;
-        for (int j = 2; j < n; ++j) seen.add(out[j]);
-        for (int i = n; i < count; ++i)
-            if (seen.mayHold(out[i]) && contains(out + 2, n - 2, out[i])) return 0;
+        const int* q0 = t_.verticesOfFace(f0).begin();
+        const int* q1 = t_.verticesOfFace(f1).begin();
+        const int count = n == 3 ? edgeOf<3>(a, b, q0, q1, out) : edgeOf<4>(a, b, q0, q1, out);
+        if (count == 0) return 0;
         key = n == 3 ? 0 : 1;
         return count;
     }
@@ -122,6 +107,34 @@ private:
         static std::uint64_t bit(int v) { return std::uint64_t(1) << ((unsigned(v) * 0x9E3779B1u) >> 26); }
         std::uint64_t bits_ = 0;
     };
+    // The N corners of q into out; false if one repeats.
+    template <int N>
+    static bool copyDistinct(const int* q, int* out) {
+        bool repeat = false;  // without a branch per pair: repeats are rare
+        for (int i = 0; i < N; ++i) {
+            out[i] = q[i];
+            for (int j = 0; j < i; ++j) repeat |= q[i] == q[j];
+        }
+        return !repeat;
+    }
+    // An edge (a, b) between faces q0 and q1 of N corners: a, b, then each face's other corners
+    // in corner order; 0 if the faces share more than the edge (their entries would merge: left to
+    // the rules).
+    template <int N>
+    static int edgeOf(int a, int b, const int* q0, const int* q1, int* out) {
+        out[0] = a;
+        out[1] = b;
+        int count = 2;
+        for (const int* q : {q0, q1})
+            for (int i = 0; i < N; ++i) {  // without a branch: where a and b sit varies
+                out[count] = q[i];
+                count += int(q[i] != a) & int(q[i] != b);
+            }
+        bool repeat = false;
+        for (int i = N; i < count; ++i)
+            for (int j = 2; j < N; ++j) repeat |= out[i] == out[j];
+        return repeat ? 0 : count;
+    }
     static bool contains(const int* list, int n, int v) {
         for (int i = 0; i < n; ++i)
             if (list[i] == v) return true;
