@@ -1,6 +1,7 @@
 #include "far/internal/refine_topology.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -114,9 +115,15 @@ private:
         resizeFresh(c_.faceVerts, 4 * p_.faceVerts.size());
         resizeFresh(c_.faceHole, numChildFaces);
         if (WithEdges) resizeFresh(c_.faceEdges, c_.faceVerts.size());
+        // Read once: the stores below are ints (and bytes), which the compiler must otherwise
+        // assume may change them.
+        const int edgeBase = num_.numFacePoints, vertexBase = num_.numFacePoints + p_.numEdges();
+        const int* facePoint = num_.facePoint.data();
+        const std::uint8_t* parentHoles = p_.faceHole.data();
+        std::uint8_t* holes = c_.faceHole.data();
         forEach(nf, [&](int f) {
             const IndexSpan corners = p_.verticesOfFace(f), sides = p_.edgesOfFace(f);
-            const int n = corners.size(), first = firstChildFace_[f];
+            const int n = corners.size(), first = firstChildFace_[f], next = firstChildFace_[f + 1];
             const bool four = inFour(n);
             int* offsets = c_.faceOffsets.data() + first;
             const int corner = 4 * p_.faceOffsets[f];
@@ -131,20 +138,21 @@ private:
             for (int i = 0, last = n - 1; i < n; last = i++) {  // corner i's child keeps the parent's orientation
                 const int v = corners[i], e = sides[i], prev = sides[last];
                 offsets[i] = corner + k;
-                put(k++, num_.vertexPoint(v), [&] { return halfLeaving(e, v); });
+                put(k++, vertexBase + v, [&] { return halfLeaving(e, v); });
                 if (four) {
-                    put(k++, num_.edgePoint(e), [&] { return interior(f, last); });
+                    put(k++, edgeBase + e, [&] { return interior(f, last); });
                 } else {
-                    put(k++, num_.edgePoint(e), [&] { return interior(f, i); });
-                    put(k++, num_.facePoint[f], [&] { return interior(f, last); });
+                    put(k++, edgeBase + e, [&] { return interior(f, i); });
+                    put(k++, facePoint[f], [&] { return interior(f, last); });
                 }
-                put(k++, num_.edgePoint(prev), [&] { return halfEntering(prev, v); });
+                put(k++, edgeBase + prev, [&] { return halfEntering(prev, v); });
             }
             if (four) {
                 offsets[3] = corner + k;
-                for (int i = 0; i < 3; ++i) put(k++, num_.edgePoint(sides[i]), [&] { return interior(f, i); });
+                for (int i = 0; i < 3; ++i) put(k++, edgeBase + sides[i], [&] { return interior(f, i); });
             }
-            for (int i = first; i < firstChildFace_[f + 1]; ++i) c_.faceHole[i] = p_.faceHole[f];
+            const std::uint8_t hole = parentHoles[f];
+            for (int i = first; i < next; ++i) holes[i] = hole;
         });
         c_.faceOffsets[numChildFaces] = int(c_.faceVerts.size());
     }
