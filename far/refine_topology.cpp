@@ -120,7 +120,8 @@ private:
         const int edgeBase = num_.numFacePoints, vertexBase = num_.numFacePoints + p_.numEdges();
         const int* facePoint = num_.facePoint.data();
         const std::uint8_t* parentHoles = p_.faceHole.data();
-        std::uint8_t* holes = c_.faceHole.data();
+        std::uint8_t* holes = c_.faceHole.data();  // all 0 as sized: only holes' children are written
+        const bool anyHole = std::any_of(p_.faceHole.begin(), p_.faceHole.end(), [](std::uint8_t h) { return h != 0; });
         forEach(nf, [&](int f) {
             const IndexSpan corners = p_.verticesOfFace(f), sides = p_.edgesOfFace(f);
             const int n = corners.size(), first = firstChildFace_[f], next = firstChildFace_[f + 1];
@@ -151,8 +152,8 @@ private:
                 offsets[3] = corner + k;
                 for (int i = 0; i < 3; ++i) put(k++, edgeBase + sides[i], [&] { return interior(f, i); });
             }
-            const std::uint8_t hole = parentHoles[f];
-            for (int i = first; i < next; ++i) holes[i] = hole;
+            if (anyHole && parentHoles[f])
+                for (int i = first; i < next; ++i) holes[i] = parentHoles[f];
         });
         c_.faceOffsets[numChildFaces] = int(c_.faceVerts.size());
     }
