@@ -1,11 +1,13 @@
 #include "far/internal/refine_topology.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "far/internal/crease.h"
+#include "far/internal/fresh_pages.h"
 #include "far/internal/topology_builder.h"
 
 namespace quadtri {
@@ -109,13 +111,20 @@ private:
         const int nf = p_.numFaces(), numChildFaces = firstChildFace_[nf];
         // A face split around a face point makes n quads (4n child corners), a triangle split
         // in four four triangles (12): 4 child corners per parent corner either way.
-        c_.faceOffsets.resize(std::size_t(numChildFaces) + 1);
-        c_.faceVerts.resize(4 * p_.faceVerts.size());
-        c_.faceHole.resize(numChildFaces);
-        if (WithEdges) c_.faceEdges.resize(c_.faceVerts.size());
+        resizeFresh(c_.faceOffsets, std::size_t(numChildFaces) + 1);
+        resizeFresh(c_.faceVerts, 4 * p_.faceVerts.size());
+        resizeFresh(c_.faceHole, numChildFaces);
+        if (WithEdges) resizeFresh(c_.faceEdges, c_.faceVerts.size());
+        // Read once: the stores below are ints (and bytes), which the compiler must otherwise
+        // assume may change them.
+        const int edgeBase = num_.numFacePoints, vertexBase = num_.numFacePoints + p_.numEdges();
+        const int* facePoint = num_.facePoint.data();
+        const std::uint8_t* parentHoles = p_.faceHole.data();
+        std::uint8_t* holes = c_.faceHole.data();  // all 0 as sized: only holes' children are written
+        const bool anyHole = std::any_of(p_.faceHole.begin(), p_.faceHole.end(), [](std::uint8_t h) { return h != 0; });
         forEach(nf, [&](int f) {
             const IndexSpan corners = p_.verticesOfFace(f), sides = p_.edgesOfFace(f);
-            const int n = corners.size(), first = firstChildFace_[f];
+            const int n = corners.size(), first = firstChildFace_[f], next = firstChildFace_[f + 1];
             const bool four = inFour(n);
             int* offsets = c_.faceOffsets.data() + first;
             const int corner = 4 * p_.faceOffsets[f];
@@ -130,27 +139,28 @@ private:
             for (int i = 0, last = n - 1; i < n; last = i++) {  // corner i's child keeps the parent's orientation
                 const int v = corners[i], e = sides[i], prev = sides[last];
                 offsets[i] = corner + k;
-                put(k++, num_.vertexPoint(v), [&] { return halfLeaving(e, v); });
+                put(k++, vertexBase + v, [&] { return halfLeaving(e, v); });
                 if (four) {
-                    put(k++, num_.edgePoint(e), [&] { return interior(f, last); });
+                    put(k++, edgeBase + e, [&] { return interior(f, last); });
                 } else {
-                    put(k++, num_.edgePoint(e), [&] { return interior(f, i); });
-                    put(k++, num_.facePoint[f], [&] { return interior(f, last); });
+                    put(k++, edgeBase + e, [&] { return interior(f, i); });
+                    put(k++, facePoint[f], [&] { return interior(f, last); });
                 }
-                put(k++, num_.edgePoint(prev), [&] { return halfEntering(prev, v); });
+                put(k++, edgeBase + prev, [&] { return halfEntering(prev, v); });
             }
             if (four) {
                 offsets[3] = corner + k;
-                for (int i = 0; i < 3; ++i) put(k++, num_.edgePoint(sides[i]), [&] { return interior(f, i); });
+                for (int i = 0; i < 3; ++i) put(k++, edgeBase + sides[i], [&] { return interior(f, i); });
             }
-            for (int i = first; i < firstChildFace_[f + 1]; ++i) c_.faceHole[i] = p_.faceHole[f];
+            if (anyHole && parentHoles[f])
+                for (int i = first; i < next; ++i) holes[i] = parentHoles[f];
         });
         c_.faceOffsets[numChildFaces] = int(c_.faceVerts.size());
     }
 
     void edges() {
         const int ne = p_.numEdges();
-        c_.edgeVerts.resize(2 * std::size_t(firstInterior_.back()));
+        resizeFresh(c_.edgeVerts, 2 * std::size_t(firstInterior_.back()));
         forEach(ne, [&](int e) {
             const int ep = num_.edgePoint(e);
             c_.edgeVerts[4 * std::size_t(e) + 0] = num_.vertexPoint(p_.edgeVerts[2 * e]);
@@ -173,7 +183,7 @@ private:
     // edges: the two child faces beside them.
     void edgeFaces() {
         const int ne = p_.numEdges(), nf = p_.numFaces(), numChildEdges = c_.numEdges();
-        c_.edgeFaceOffsets.resize(std::size_t(numChildEdges) + 1);
+        resizeFresh(c_.edgeFaceOffsets, std::size_t(numChildEdges) + 1);
         const int interiorBase = 2 * int(p_.edgeFaces.size());
         forEach(ne, [&](int e) {
             const int b = p_.edgeFaceOffsets[e], n = p_.edgeFaceCount(e);
@@ -182,7 +192,7 @@ private:
         });
         forEach(numChildEdges - 2 * ne, [&](int k) { c_.edgeFaceOffsets[2 * ne + k] = interiorBase + 2 * k; });
         c_.edgeFaceOffsets[numChildEdges] = interiorBase + 2 * (numChildEdges - 2 * ne);
-        c_.edgeFaces.resize(c_.edgeFaceOffsets[numChildEdges]);
+        resizeFresh(c_.edgeFaces, c_.edgeFaceOffsets[numChildEdges]);
         forEach(ne, [&](int e) {
             int* out = c_.edgeFaces.data() + c_.edgeFaceOffsets[2 * e];
             const int n = p_.edgeFaceCount(e), a = p_.edgeVerts[2 * e];
@@ -214,11 +224,11 @@ private:
     template <typename Count, typename Fill>
     void incidence(std::vector<int>& offsets, std::vector<int>& list, const Count& count, const Fill& fill) {
         const int nv = c_.numVertices;
-        offsets.resize(std::size_t(nv) + 1);
+        resizeFresh(offsets, std::size_t(nv) + 1);
         offsets[0] = 0;
         forEach(nv, [&](int v) { offsets[v + 1] = count(v); });
         for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
-        list.resize(offsets[nv]);
+        resizeFresh(list, offsets[nv]);
         forEach(nv, [&](int v) { fill(v, list.data() + offsets[v]); });
     }
 
@@ -322,8 +332,8 @@ private:
     // their edge's, face points none. When triangles split into quads every child is a quad, so
     // no seam is left.
     void flags() {
-        c_.edgeFlags.assign(c_.numEdges(), 0);
-        c_.vertFlags.assign(c_.numVertices, 0);
+        assignFresh(c_.edgeFlags, c_.numEdges(), 0);
+        assignFresh(c_.vertFlags, c_.numVertices, 0);
         const bool seamsStay = num_.triangleSplit == TriangleSplit::FourTriangles;
         const uint8_t edgeKept = seamsStay ? 0xff : uint8_t(~kEdgeSeam);
         const uint8_t vertexKept = seamsStay ? 0xff : uint8_t(~kVertexSeam);
@@ -335,8 +345,8 @@ private:
                                               (f & kEdgeSeam ? kVertexSeam : 0);
         });
         forEach(p_.numVertices, [&](int v) { c_.vertFlags[num_.vertexPoint(v)] = p_.vertFlags[v] & vertexKept; });
-        c_.edgeSharpness.assign(c_.numEdges(), 0.0f);
-        c_.vertSharpness.assign(c_.numVertices, 0.0f);
+        assignFresh(c_.edgeSharpness, c_.numEdges(), 0.0f);
+        assignFresh(c_.vertSharpness, c_.numVertices, 0.0f);
     }
 
     const Topology& p_;

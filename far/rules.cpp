@@ -9,6 +9,7 @@
 #include <memory>
 #include <type_traits>
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -104,7 +105,7 @@ void vertexMask(const LevelInputs& in, Worker& w, int v) {
 
 // Masks of children [first, last) in child order (face points, edge points, vertex points).
 // Float tables of smooth levels take the regular masks' short cut (regular_masks.h) where the
-// scheme allows it (SchemeRules::regularMasksApply, SchemeMasks::regularEdge / regularVertex).
+// scheme allows it (SchemeRules::regularMasksApply, SchemeMasks::regularFace / regularEdge / regularVertex).
 template <typename Table>
 void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, int last) {
     Worker w(in);
@@ -112,22 +113,29 @@ void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, 
     constexpr bool kFloat = std::is_same_v<Table, StencilTable>;
     const bool shortCut = kFloat && in.smooth && in.rules.regularMasksApply();
     RegularMasks regular(in.t);
-    int gathered[2 * RegularMasks::kMaxValence + 1];
+    constexpr int kMaxGathered = 2 * RegularMasks::kMaxValence + 1;
+    int gathered[kMaxGathered];  // the first mask of a key's vertices, compared with the rules'
     for (int c = first; c < last; ++c) {
         int n = 0, key = 0;
-        if (shortCut && c >= edgePoints) {
-            if (c < vertexPoints) {
-                const int e = c - edgePoints;
-                if (w.masks->regularEdge(e)) n = regular.edge(e, gathered, key);
-            } else {
-                const int v = c - vertexPoints;
-                if (w.masks->regularVertex(v)) n = regular.vertex(v, gathered, key);
-            }
-        }
         if constexpr (kFloat) {
-            if (n > 0 && regular.weights(key) >= 0) {
-                writer.append(gathered, n, regular.weights(key));
-                continue;
+            // Gathered straight into the table, kept there when the key's weights are known.
+            if (shortCut) {
+                int* out = writer.nextIndices(kMaxGathered);
+                if (c < edgePoints) {
+                    const int f = in.faceOfPoint[c];
+                    if (w.masks->regularFace(f)) n = regular.face(f, out, key);
+                } else if (c < vertexPoints) {
+                    const int e = c - edgePoints;
+                    if (w.masks->regularEdge(e)) n = regular.edge(e, out, key);
+                } else {
+                    const int v = c - vertexPoints;
+                    if (w.masks->regularVertex(v)) n = regular.vertex(v, out, key);
+                }
+                if (n > 0 && regular.weights(key) >= 0) {
+                    writer.appendGathered(n, regular.weights(key));
+                    continue;
+                }
+                if (n > 0) std::copy(out, out + n, gathered);
             }
         }
         if (c < edgePoints)
@@ -184,8 +192,12 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
     // growing by doubling would copy and touch the arrays several times over.
     std::size_t bound = 4 * std::size_t(t.numEdges()) + t.numVertices;
     for (int f = 0; f < t.numFaces(); ++f) bound += std::size_t(t.faceSize(f)) * (1 + 2 * t.faceSize(f));
-    const int parts =
-        std::max(1, std::min(tbb::this_task_arena::max_concurrency(), numChildren / kMinChildrenPerPart));
+    // The threads that can run: the arena's, unless a tbb::global_control allows fewer (a part
+    // per thread that cannot run would only add its join).
+    const int threads = int(std::min<std::size_t>(
+        std::size_t(tbb::this_task_arena::max_concurrency()),
+        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
+    const int parts = std::max(1, std::min(threads, numChildren / kMinChildrenPerPart));
     auto split = [&](int k) { return int(std::int64_t(numChildren) * k / parts); };
     auto partBound = [&](int k) {
         return std::size_t(double(bound) * (split(k + 1) - split(k)) / std::max(1, numChildren)) + 64;
@@ -203,7 +215,7 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
         buildRange(in, partWriter, split(k), split(k + 1));
         partWriter.finish();
     });
-    for (const Table& part : rest) writer.append(part);
+    writer.append(rest);
     writer.finish();
     return table;
 }

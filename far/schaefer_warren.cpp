@@ -34,8 +34,11 @@ bool SchaeferWarrenMasks::touchesVertex(int v) const {
 
 void SchaeferWarrenMasks::addCopy(int v, bool quad, double scale) {
     const StencilTableD& copies = quad ? u_.quadCopies : u_.triangleCopies;
-    for (int k = copies.offsets[v]; k < copies.offsets[v] + copies.sizes[v]; ++k)
-        acc_.add(copies.indices[k], scale * copies.weights[k]);
+    // The copy's bounds read once: the accumulator's int stores could otherwise change them.
+    const int first = copies.offsets[v], last = first + copies.sizes[v];
+    const int* indices = copies.indices.data();
+    const double* weights = copies.weights.data();
+    for (int k = first; k < last; ++k) acc_.add(indices[k], scale * weights[k]);
 }
 
 void SchaeferWarrenMasks::addPoint(Point p, bool quad, double scale) {

@@ -302,7 +302,7 @@ TEST(LevelStencils, PartsJoinToTheSerialTable) {
 TEST(LevelStencils, RegularShortCutEqualsTheRules) {
     for (const char* name : {"osd/loop_icosahedron.obj", "osd/catmark_cube.obj", "osd/catmark_torus.obj", "osd/loop_cube.obj",
                              "mixed/mixed_torus.obj"}) {
-        for (Scheme scheme : {Scheme::StamLoop, Scheme::SchaeferWarren}) {
+        for (Scheme scheme : {Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmullClark}) {
             Options options;
             options.scheme = scheme;
             expectShortCutEqualsTheRules(name, options);

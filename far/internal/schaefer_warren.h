@@ -31,6 +31,7 @@ public:
 
     void facePoint(int face, double scale) override;
     void smoothEdgePoint(int edge, double scale) override;  // an edge with two faces
+    bool regularFace(int face) const override { return !touchesFace(face); }
     bool regularEdge(int edge) const override { return !touchesEdge(edge); }
     bool regularVertex(int vertex) const override { return !touchesVertex(vertex); }
 

@@ -53,6 +53,7 @@ public:
     // Whether regular_masks.h may reuse a pooled mask for this child (SchemeRules::
     // regularMasksApply() says whether it may for the scheme at all): false where the scheme
     // builds a mask that differs from its plain rule of the same face sizes and valence.
+    virtual bool regularFace(int /*face*/) const { return true; }
     virtual bool regularEdge(int /*edge*/) const { return true; }
     virtual bool regularVertex(int /*vertex*/) const { return true; }
 

@@ -9,6 +9,10 @@
 #include <string>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "far/internal/fresh_pages.h"
 #include "far/internal/sparse_accumulator.h"
 #include <quadtri/far/stencil_table.h>
 #include "far/internal/weight_pool.h"
@@ -36,7 +40,10 @@ public:
         table_.offsets.push_back(int(table_.indices.size()));
         table_.sizes.push_back(acc.flush(table_.indices, table_.weights));
     }
-    // Appends the stencils of a table built for the children that follow.
+    // Appends the stencils of tables built for the children that follow, in order.
+    void append(const std::vector<StencilTableD>& parts) {
+        for (const StencilTableD& part : parts) append(part);
+    }
     void append(const StencilTableD& part) {
         const int base = int(table_.indices.size());
         for (int offset : part.offsets) table_.offsets.push_back(base + offset);
@@ -57,9 +64,9 @@ public:
     // blocks through a cursor. vector::push_back and resize are not inlined here, and a call
     // per stencil was a fifth of the build.
     StencilWriter(StencilTable& table, int numStencils, std::size_t maxEntries) : table_(table) {
-        table_.offsets.assign(std::size_t(numStencils) + 1, 0);
-        table_.weightOffsets.assign(numStencils, 0);
-        table_.indices.reserve(maxEntries);
+        assignFresh(table_.offsets, std::size_t(numStencils) + 1, 0);
+        assignFresh(table_.weightOffsets, numStencils, 0);
+        reserveFresh(table_.indices, maxEntries);
     }
     void append(SparseAccumulator& acc) {
         const int n = acc.size();
@@ -74,9 +81,17 @@ public:
         table_.weightOffsets[stencils_] = previousOffset_;
         table_.offsets[++stencils_] = int(entries_);
     }
-    // Appends a stencil whose weights are already in the pool (RegularMasks).
-    void append(const int* indices, int n, int weightOffset) {
-        std::copy(indices, indices + n, extendIndices(n));
+    // Room for n indices after the last stencil, for the next stencil to be gathered in place
+    // (RegularMasks): no copy per stencil. What is written there counts only once appended.
+    int* nextIndices(int n) {
+        if (entries_ + n > table_.indices.size())
+            table_.indices.resize(std::max(table_.indices.size() + kIndexBlock, entries_ + n));
+        return table_.indices.data() + entries_;
+    }
+    // Appends the stencil of the n indices written at nextIndices(), whose weights are already in
+    // the pool.
+    void appendGathered(int n, int weightOffset) {
+        entries_ += n;
         table_.weightOffsets[stencils_] = weightOffset;
         table_.offsets[++stencils_] = int(entries_);
     }
@@ -86,18 +101,48 @@ public:
         return int(entries_) - first == n && std::equal(indices, indices + n, table_.indices.data() + first);
     }
     int lastWeightOffset() const { return table_.weightOffsets[stencils_ - 1]; }
-    // Appends the stencils of a finished table built for the children that follow, interning
-    // its pool's sequences in first-use order: the result equals a serial build's exactly.
-    void append(const StencilTable& part) {
-        const int base = int(entries_);
-        remap_.assign(part.weights.size() + 1, -1);  // + 1: an empty sequence may sit at the end
-        for (int i = 0; i < part.numStencils(); ++i) {
-            int& global = remap_[part.weightOffsets[i]];
-            if (global < 0) global = pool_.intern(part.weightsOf(i), part.size(i));
-            table_.weightOffsets[stencils_] = global;
-            table_.offsets[++stencils_] = base + part.offsets[i + 1];
+    // Appends the stencils of finished tables built for the children that follow, in order,
+    // interning each pool's sequences in first-use order: the result equals a serial build's
+    // exactly. Only the interning is serial (a handful of sequences on a smooth level); the
+    // offsets, weight offsets and indices are copied in parallel.
+    void append(const std::vector<StencilTable>& parts) {
+        struct Placed {
+            std::vector<int> remap;  // the part's pool offsets -> this pool's
+            std::size_t entry;       // where its entries start in the table
+            int stencil;             // where its stencils start
+        };
+        std::vector<Placed> placed(parts.size());
+        std::size_t entries = entries_;
+        int stencils = stencils_;
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            const StencilTable& part = parts[k];
+            Placed& p = placed[k];
+            p.remap.assign(part.weights.size() + 1, -1);  // + 1: an empty sequence may sit at the end
+            for (int i = 0; i < part.numStencils(); ++i) {
+                int& global = p.remap[part.weightOffsets[i]];
+                if (global < 0) global = pool_.intern(part.weightsOf(i), part.size(i));
+            }
+            p.entry = entries;
+            p.stencil = stencils;
+            entries += part.indices.size();
+            stencils += part.numStencils();
         }
-        std::copy(part.indices.begin(), part.indices.end(), extendIndices(part.indices.size()));
+        extendIndices(entries - entries_);
+        stencils_ = stencils;
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            const StencilTable& part = parts[k];
+            const Placed& p = placed[k];
+            tbb::parallel_for(tbb::blocked_range<int>(0, part.numStencils(), kCopyGrain),
+                              [&](const tbb::blocked_range<int>& r) {
+                                  for (int i = r.begin(); i != r.end(); ++i) {
+                                      table_.weightOffsets[p.stencil + i] = p.remap[part.weightOffsets[i]];
+                                      table_.offsets[p.stencil + i + 1] = int(p.entry) + part.offsets[i + 1];
+                                  }
+                                  const int* first = part.indices.data() + part.offsets[r.begin()];
+                                  const int* last = part.indices.data() + part.offsets[r.end()];
+                                  std::copy(first, last, table_.indices.data() + p.entry + part.offsets[r.begin()]);
+                              });
+        }
     }
     void finish() {
         // Offsets were sized for the stencils announced: fewer written would leave a wrong table.
@@ -110,11 +155,10 @@ public:
 
 private:
     static constexpr std::size_t kIndexBlock = 16384;
+    static constexpr int kCopyGrain = 16384;  // stencils per task of a part's copy
 
     int* extendIndices(std::size_t n) {
-        if (entries_ + n > table_.indices.size())
-            table_.indices.resize(std::max(table_.indices.size() + kIndexBlock, entries_ + n));
-        int* out = table_.indices.data() + entries_;
+        int* out = nextIndices(int(n));
         entries_ += n;
         return out;
     }
@@ -124,7 +168,6 @@ private:
     std::size_t entries_ = 0;  // indices written (table_.indices runs ahead by up to a block)
     WeightPool pool_;
     std::vector<float> maskWeights_;  // the current mask's weights before interning
-    std::vector<int> remap_;          // a part's pool offsets -> this pool's
     int previousOffset_ = -1;         // where the last mask's weights sit in the pool
     int previousSize_ = 0;
 
