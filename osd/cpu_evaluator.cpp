@@ -26,6 +26,24 @@ void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
                              detail::meshNormalArrays(table), start, end);
 }
 
+void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const MeshNormalTable& table,
+                                   MeshNormalScratch& scratch, int start, int end) {
+    if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
+                                          end))
+        return;
+    const kernels::MeshNormalArrays arrays = detail::meshNormalArrays(table);
+    const float* s = src + srcDesc.offset;
+    float* d = dst + dstDesc.offset;
+    if (end - start < table.numVertices) {
+        kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, start, end);
+        return;
+    }
+    float* areas = detail::facetAreasOf(table, scratch);
+    kernels::evalFacetAreas(s, srcDesc.stride, arrays.facets, 0, table.numFacets(), areas);
+    kernels::sumFacetAreas(areas, arrays, d, dstDesc.stride, start, end);
+}
+
 void CpuEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
                                      const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc,
                                      float* dstDv, const BufferDescriptor& dvDesc, float* dstNormal,

@@ -61,6 +61,28 @@ void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
     });
 }
 
+void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
+                                   const BufferDescriptor& dstDesc, const MeshNormalTable& table,
+                                   MeshNormalScratch& scratch, int start, int end) {
+    if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
+                                          end))
+        return;
+    const kernels::MeshNormalArrays arrays = detail::meshNormalArrays(table);
+    const float* s = src + srcDesc.offset;
+    float* d = dst + dstDesc.offset;
+    if (end - start < table.numVertices) {
+        forBlocks(start, end, kGrain,
+                  [&](int b, int e) { kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, b, e); });
+        return;
+    }
+    // A facet or a vertex sum is cheaper than a stencil: larger blocks.
+    float* areas = detail::facetAreasOf(table, scratch);
+    forBlocks(0, table.numFacets(), 4 * kGrain,
+              [&](int b, int e) { kernels::evalFacetAreas(s, srcDesc.stride, arrays.facets, b, e, areas); });
+    forBlocks(start, end, 4 * kGrain,
+              [&](int b, int e) { kernels::sumFacetAreas(areas, arrays, d, dstDesc.stride, b, e); });
+}
+
 void TbbEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
                                      const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc,
                                      float* dstDv, const BufferDescriptor& dvDesc, float* dstNormal,
