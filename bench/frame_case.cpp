@@ -20,8 +20,8 @@ namespace quadtri::bench {
 namespace {
 
 // The second figure's frame: refined positions and mesh normals. The per-level tables of the
-// chain to level N, then EvalMeshNormals of level N through the chain's MeshNormalTable (its
-// two-pass form, with a scratch), on CpuEvaluator or TbbEvaluator.
+// chain to level N, then EvalMeshNormals of level N through the chain's MeshNormalTable, on
+// CpuEvaluator or TbbEvaluator.
 class MeshNormalFrameEvaluator : public realtime::FrameEvaluator {
 public:
     MeshNormalFrameEvaluator(const realtime::SurfaceTables& chain, bool threaded)
@@ -43,8 +43,8 @@ public:
         }
         times.evaluateMs = levels.elapsedMs();
         Stopwatch normals;
-        if (threaded_) TbbEvaluator::EvalMeshNormals(source, xyz, normals_.data(), xyz, chain_.fallback, scratch_);
-        else CpuEvaluator::EvalMeshNormals(source, xyz, normals_.data(), xyz, chain_.fallback, scratch_);
+        if (threaded_) TbbEvaluator::EvalMeshNormals(source, xyz, normals_.data(), xyz, chain_.fallback);
+        else CpuEvaluator::EvalMeshNormals(source, xyz, normals_.data(), xyz, chain_.fallback);
         times.normalsMs = normals.elapsedMs();
     }
 
@@ -59,7 +59,6 @@ private:
     const float* cage_ = nullptr;
     std::vector<std::vector<float>> levels_;
     std::vector<float> normals_;
-    MeshNormalScratch scratch_;  // sized by the warm-up frame
 };
 
 const char* routeName(realtime::TableRoute route) {

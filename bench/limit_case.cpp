@@ -56,8 +56,8 @@ void LimitCase::levelsThenLimit(bool threaded, std::vector<float>& position, std
 }
 
 void LimitCase::meshNormals(bool threaded, std::vector<float>& normal) {
-    if (threaded) TbbEvaluator::EvalMeshNormals(levels_[level_].data(), kXyz, normal.data(), kXyz, meshTable_, meshScratch_);
-    else CpuEvaluator::EvalMeshNormals(levels_[level_].data(), kXyz, normal.data(), kXyz, meshTable_, meshScratch_);
+    if (threaded) TbbEvaluator::EvalMeshNormals(levels_[level_].data(), kXyz, normal.data(), kXyz, meshTable_);
+    else CpuEvaluator::EvalMeshNormals(levels_[level_].data(), kXyz, normal.data(), kXyz, meshTable_);
 }
 
 void LimitCase::prepare() {

@@ -52,7 +52,6 @@ private:
     std::unique_ptr<Refiner> refiner_;
     LimitStencilTable limit_, limitOverLevel_;
     MeshNormalTable meshTable_;
-    MeshNormalScratch meshScratch_;  // EvalMeshNormals' facet areas
     std::vector<std::vector<float>> levels_;  // per level, for the chain (level 0: the control positions)
     std::vector<float> position_, normal_;
     std::string factorizedRefused_;

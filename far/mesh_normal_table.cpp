@@ -1,5 +1,9 @@
 #include <quadtri/far/mesh_normal_table.h>
 
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
 namespace quadtri {
 inline namespace v0 {
 
@@ -21,37 +25,34 @@ void forEachTriple(const int* c, int n, Add&& add) {
     }
 }
 
-// Calls add(p, q, r, s) for every facet of a face (corners c, size n): itself when it has 3 or 4
-// corners (a triangle as (c0, c1, c2, c2)), else the fan of quads (c0, ck, ck+1, ck+2) from its
-// first corner, closed by a triangle when n is odd.
-template <class Add>
-void forEachFacet(const int* c, int n, Add&& add) {
-    if (n == 3) {
-        add(c[0], c[1], c[2], c[2]);
-        return;
-    }
-    int k = 1;
-    for (; k + 2 < n; k += 2) add(c[0], c[k], c[k + 1], c[k + 2]);
-    if (k + 1 < n) add(c[0], c[k], c[k + 1], c[k + 1]);
-}
-
-int facetsOfFace(int n) { return n == 3 ? 1 : (n - 1) / 2; }
-
-// Counting sort by vertex: offsets (numVertices + 1) from the per-vertex counts `count(f, emit)`
-// reports for each drawn face; `entries` sized to `width` ints per entry; then fill(f, next)
-// writes each vertex's entries in face order.
+// Counting sort by vertex: the offsets (numVertices + 1) of the entries count(emit) reports per
+// vertex (emit(v) once per entry), `entries` sized to `width` ints per entry, then fill(next)
+// writing each vertex's entries in the order count reported them.
 template <class Count, class Fill>
-std::vector<int> sortByVertex(const LevelFaces& faces, int numVertices, Count&& count, std::vector<int>& entries,
-                              int width, Fill&& fill) {
+std::vector<int> sortByVertex(int numVertices, Count&& count, std::vector<int>& entries, int width, Fill&& fill) {
     std::vector<int> offsets(std::size_t(numVertices) + 1, 0);
-    for (int f = 0; f < faces.numFaces(); ++f)
-        if (!faces.isHole(f)) count(f, [&](int v, int n) { offsets[std::size_t(v) + 1] += n; });
+    count([&](int v) { ++offsets[std::size_t(v) + 1]; });
     for (std::size_t v = 1; v < offsets.size(); ++v) offsets[v] += offsets[v - 1];
     entries.resize(std::size_t(width) * std::size_t(offsets.back()));
     std::vector<int> next(offsets.begin(), offsets.end() - 1);
-    for (int f = 0; f < faces.numFaces(); ++f)
-        if (!faces.isHole(f)) fill(f, next);
+    fill(next);
     return offsets;
+}
+
+// Chunks of at least 4096 faces, at most 16 of them: enough for 16 threads, few seam vertices.
+int facesPerChunk(int faces) { return std::max(4096, (faces + 15) / 16); }
+
+// Flags the corners of the seam vertices (MeshNormalTable's comment): those whose faces lie in
+// more than one chunk.
+void flagSeams(MeshNormalTable& t) {
+    std::vector<char> seam(std::size_t(t.numVertices), 0);
+    for (int v = 0; v < t.numVertices; ++v) {
+        const int first = t.vertexFaceOffsets[v], last = t.vertexFaceOffsets[v + 1] - 1;
+        seam[v] = last > first && t.vertexFaces[first] / t.facesPerChunk != t.vertexFaces[last] / t.facesPerChunk;
+        if (seam[v]) t.seamVertices.push_back(v);
+    }
+    for (int& c : t.faceCorners)
+        if (seam[c]) c |= MeshNormalTable::kSeamCorner;
 }
 
 }  // namespace
@@ -59,42 +60,47 @@ std::vector<int> sortByVertex(const LevelFaces& faces, int numVertices, Count&& 
 MeshNormalTable buildMeshNormalTable(const LevelFaces& faces) {
     MeshNormalTable t;
     t.numVertices = faces.numVertices();
-
-    // Facets face by face; firstFacet[f] is face f's first.
-    std::vector<int> firstFacet(std::size_t(faces.numFaces()) + 1, 0);
-    for (int f = 0; f < faces.numFaces(); ++f)
-        firstFacet[std::size_t(f) + 1] = firstFacet[f] + (faces.isHole(f) ? 0 : facetsOfFace(faces.faceSize(f)));
-    t.facets.reserve(4 * std::size_t(firstFacet.back()));
+    if (t.numVertices > MeshNormalTable::kCornerIndexMask)
+        throw std::invalid_argument("buildMeshNormalTable: " + std::to_string(t.numVertices) +
+                                    " vertices, more than the table's " +
+                                    std::to_string(MeshNormalTable::kCornerIndexMask));
     for (int f = 0; f < faces.numFaces(); ++f) {
         if (faces.isHole(f)) continue;
-        forEachFacet(faces.verticesOfFace(f).begin(), faces.faceSize(f),
-                     [&](int p, int q, int r, int s) { t.facets.insert(t.facets.end(), {p, q, r, s}); });
+        const IndexSpan c = faces.verticesOfFace(f);
+        t.faceCorners.insert(t.faceCorners.end(), c.begin(), c.begin() + faces.faceSize(f));
+        t.faceOffsets.push_back(int(t.faceCorners.size()));
     }
+    const int drawn = t.numFaces();
 
-    // Every corner of a face lists all the face's facets.
-    t.facetOffsets = sortByVertex(
-        faces, t.numVertices,
-        [&](int f, auto&& emit) {
-            const IndexSpan c = faces.verticesOfFace(f);
-            for (int k = 0; k < faces.faceSize(f); ++k) emit(c.begin()[k], firstFacet[f + 1] - firstFacet[f]);
+    t.vertexFaceOffsets = sortByVertex(
+        t.numVertices,
+        [&](auto&& emit) {
+            for (int c : t.faceCorners) emit(c);
         },
-        t.vertexFacets, 1,
-        [&](int f, std::vector<int>& next) {
-            const IndexSpan c = faces.verticesOfFace(f);
-            for (int k = 0; k < faces.faceSize(f); ++k)
-                for (int i = firstFacet[f]; i < firstFacet[f + 1]; ++i) t.vertexFacets[next[c.begin()[k]]++] = i;
+        t.vertexFaces, 1,
+        [&](std::vector<int>& next) {
+            for (int f = 0; f < drawn; ++f)
+                for (int k = t.faceOffsets[f]; k < t.faceOffsets[f + 1]; ++k) t.vertexFaces[next[t.faceCorners[k]]++] = f;
         });
+    t.facesPerChunk = facesPerChunk(drawn);
+    flagSeams(t);
 
+    auto eachDrawnFace = [&](auto&& body) {
+        for (int f = 0; f < faces.numFaces(); ++f)
+            if (!faces.isHole(f)) body(faces.verticesOfFace(f).begin(), faces.faceSize(f));
+    };
     t.offsets = sortByVertex(
-        faces, t.numVertices,
-        [&](int f, auto&& emit) {
-            forEachTriple(faces.verticesOfFace(f).begin(), faces.faceSize(f), [&](int v, int, int, int) { emit(v, 1); });
+        t.numVertices,
+        [&](auto&& emit) {
+            eachDrawnFace([&](const int* c, int n) { forEachTriple(c, n, [&](int v, int, int, int) { emit(v); }); });
         },
         t.corners, 3,
-        [&](int f, std::vector<int>& next) {
-            forEachTriple(faces.verticesOfFace(f).begin(), faces.faceSize(f), [&](int v, int a, int b, int d) {
-                int* out = &t.corners[3 * std::size_t(next[v]++)];
-                out[0] = a, out[1] = b, out[2] = d;
+        [&](std::vector<int>& next) {
+            eachDrawnFace([&](const int* c, int n) {
+                forEachTriple(c, n, [&](int v, int a, int b, int d) {
+                    int* out = &t.corners[3 * std::size_t(next[v]++)];
+                    out[0] = a, out[1] = b, out[2] = d;
+                });
             });
         });
     return t;

@@ -22,16 +22,6 @@ void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
     if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
                                           end))
         return;
-    kernels::evalMeshNormals(src + srcDesc.offset, srcDesc.stride, dst + dstDesc.offset, dstDesc.stride,
-                             detail::meshNormalArrays(table), start, end);
-}
-
-void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
-                                   const BufferDescriptor& dstDesc, const MeshNormalTable& table,
-                                   MeshNormalScratch& scratch, int start, int end) {
-    if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
-                                          end))
-        return;
     const kernels::MeshNormalArrays arrays = detail::meshNormalArrays(table);
     const float* s = src + srcDesc.offset;
     float* d = dst + dstDesc.offset;
@@ -39,9 +29,8 @@ void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
         kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, start, end);
         return;
     }
-    float* areas = detail::facetAreasOf(table, scratch);
-    kernels::evalFacetAreas(s, srcDesc.stride, arrays.facets, 0, table.numFacets(), areas);
-    kernels::sumFacetAreas(areas, arrays, d, dstDesc.stride, start, end);
+    // A whole level face by face (kernels/mesh_normal_kernel.h).
+    kernels::meshNormalsOfLevel(s, srcDesc.stride, d, dstDesc.stride, arrays, end, table.numFaces());
 }
 
 void CpuEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,

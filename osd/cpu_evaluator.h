@@ -28,13 +28,6 @@ public:
     static void EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
                                 const BufferDescriptor& dstDesc, const MeshNormalTable& table, int start = 0,
                                 int end = -1);
-    // The same normals (bit for bit) in two passes, each facet's area once into `scratch` (grown to
-    // the table on the first call) and then per-vertex sums: several times faster over a whole
-    // level, and no allocation once the scratch has its size. A range shorter than the table
-    // takes the one-pass loop above (a facet pass over the whole level would cost more).
-    static void EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
-                                const BufferDescriptor& dstDesc, const MeshNormalTable& table,
-                                MeshNormalScratch& scratch, int start = 0, int end = -1);
 
     // Limit positions, tangents and unit normals of stencils [start, end) of `table` (end < 0:
     // all) in one pass over each stencil's sources. Any of the four outputs may be omitted (a

@@ -1,5 +1,7 @@
 #include <quadtri/osd/tbb_evaluator.h>
 
+#include <algorithm>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -55,32 +57,26 @@ void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
     const kernels::MeshNormalArrays arrays = detail::meshNormalArrays(table);
     const float* s = src + srcDesc.offset;
     float* d = dst + dstDesc.offset;
-    // A vertex gathers ~4 faces of 3-4 corners: about the cost of a stencil, so the same grain.
-    forBlocks(start, end, kGrain, [&](int b, int e) {
-        kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, b, e);
-    });
-}
-
-void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
-                                   const BufferDescriptor& dstDesc, const MeshNormalTable& table,
-                                   MeshNormalScratch& scratch, int start, int end) {
-    if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
-                                          end))
-        return;
-    const kernels::MeshNormalArrays arrays = detail::meshNormalArrays(table);
-    const float* s = src + srcDesc.offset;
-    float* d = dst + dstDesc.offset;
+    const int srcStride = srcDesc.stride, dstStride = dstDesc.stride;
     if (end - start < table.numVertices) {
+        // A vertex gathers ~4 faces of 3-4 corners: about the cost of a stencil, so the same grain.
         forBlocks(start, end, kGrain,
-                  [&](int b, int e) { kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, b, e); });
+                  [&](int b, int e) { kernels::evalMeshNormals(s, srcStride, d, dstStride, arrays, b, e); });
         return;
     }
-    // A facet or a vertex sum is cheaper than a stencil: larger blocks.
-    float* areas = detail::facetAreasOf(table, scratch);
-    forBlocks(0, table.numFacets(), 4 * kGrain,
-              [&](int b, int e) { kernels::evalFacetAreas(s, srcDesc.stride, arrays.facets, b, e, areas); });
-    forBlocks(start, end, 4 * kGrain,
-              [&](int b, int e) { kernels::sumFacetAreas(areas, arrays, d, dstDesc.stride, b, e); });
+    // The table's chunks of faces write disjoint rows (their seam vertices left out), so they run
+    // in parallel; then the seam vertices gather their faces. Each row sums its faces in face
+    // order, as CpuEvaluator's single pass does, whatever the thread count.
+    forBlocks(0, end, 8 * kGrain, [&](int b, int e) { kernels::zeroRows(d, dstStride, b, e); });
+    const int faces = table.numFaces(), chunk = table.facesPerChunk;
+    tbb::parallel_for(tbb::blocked_range<int>(0, table.numChunks(), 1), [&](const tbb::blocked_range<int>& r) {
+        kernels::scatterChunk(s, srcStride, d, dstStride, arrays, r.begin() * chunk, std::min(faces, r.end() * chunk));
+    });
+    const int* seams = table.seamVertices.data();
+    forBlocks(0, int(table.seamVertices.size()), kGrain, [&](int b, int e) {
+        for (int i = b; i < e; ++i) kernels::sumOfFaces(s, srcStride, arrays, seams[i], d + long(seams[i]) * dstStride);
+    });
+    forBlocks(0, end, 8 * kGrain, [&](int b, int e) { kernels::normalizeRows(d, dstStride, b, e); });
 }
 
 void TbbEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,

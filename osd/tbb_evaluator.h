@@ -19,14 +19,10 @@ public:
                              const BufferDescriptor& dstDesc, const StencilTable& table, int start = 0,
                              int end = -1);
 
-    // Same contracts as CpuEvaluator::EvalMeshNormals, bit-identical results; with a scratch, both
-    // passes run in parallel.
+    // Same contract as CpuEvaluator::EvalMeshNormals, bit-identical results.
     static void EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
                                 const BufferDescriptor& dstDesc, const MeshNormalTable& table, int start = 0,
                                 int end = -1);
-    static void EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,
-                                const BufferDescriptor& dstDesc, const MeshNormalTable& table,
-                                MeshNormalScratch& scratch, int start = 0, int end = -1);
 
     // Same contract as CpuEvaluator::EvalLimitStencils, bit-identical results.
     static void EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,

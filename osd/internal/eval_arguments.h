@@ -74,14 +74,8 @@ inline kernels::LimitStencilArrays limitArrays(const LimitStencilTable& table) {
 }
 
 inline kernels::MeshNormalArrays meshNormalArrays(const MeshNormalTable& table) {
-    return kernels::MeshNormalArrays{table.facets.data(), table.facetOffsets.data(), table.vertexFacets.data()};
-}
-
-// The scratch's room for the table's facet areas, grown when it is smaller.
-inline float* facetAreasOf(const MeshNormalTable& table, MeshNormalScratch& scratch) {
-    const std::size_t floats = 3 * std::size_t(table.numFacets());
-    if (scratch.facetAreas.size() < floats) scratch.facetAreas.resize(floats);
-    return scratch.facetAreas.data();
+    return kernels::MeshNormalArrays{table.faceOffsets.data(), table.faceCorners.data(),
+                                     table.vertexFaceOffsets.data(), table.vertexFaces.data()};
 }
 
 }  // namespace detail
