@@ -80,7 +80,8 @@ MeshNormalTable buildMeshNormalTable(const LevelFaces& faces) {
         t.vertexFaces, 1,
         [&](std::vector<int>& next) {
             for (int f = 0; f < drawn; ++f)
-                for (int k = t.faceOffsets[f]; k < t.faceOffsets[f + 1]; ++k) t.vertexFaces[next[t.faceCorners[k]]++] = f;
+                for (int k = t.faceOffsets[f]; k < t.faceOffsets[f + 1]; ++k)
+                    t.vertexFaces[next[t.faceCorners[k]]++] = f;
         });
     t.facesPerChunk = facesPerChunk(drawn);
     flagSeams(t);

@@ -1,14 +1,13 @@
-// The MeshNormals loops, shared by the serial and threaded evaluators (and, through the table's
-// corner triples, mirrored in GLSL by shaders/mesh_normals.comp): vertex v's normal is the
-// normalised sum, in face order, of the vector areas of its faces (MeshNormalTable). Two ways to
-// the same bits: per vertex, gathering its faces (meshNormal: ranges, seam vertices, the limit
-// kernel's fallback), or for a whole level zeroRows, then face by face adding each face's area
-// into its corners' rows (scatterFaces: the faces' order keeps the corners' positions and sums in
-// cache, where the vertices' order scatters them), then normalizeRows.
+// The MeshNormals loops, shared by the serial and threaded evaluators (the GLSL shaders sum the
+// table's corner triples instead): vertex v's normal is the normalised sum, in face order, of the
+// vector areas of its faces (MeshNormalTable). Two ways to the same bits: per vertex, gathering
+// its faces (meshNormal: ranges, seam vertices, the limit kernel's fallback), or for a whole
+// level face by face, adding each face's area into its corners' rows (kernels/mesh_normal_kernel.cpp:
+// the faces' order keeps the corners' positions and rows in cache, where the vertices' order
+// scatters them).
 #pragma once
 
 #include <cmath>
-#include <type_traits>
 
 #include <quadtri/far/mesh_normal_table.h>
 

@@ -252,7 +252,8 @@ TEST(MeshNormals, WholeLevelPassEqualsPerVertexPassAndTheTripleForm) {
         // Packed positions too: the whole-level loops have a form for that layout of their own.
         std::vector<float> packed(3 * std::size_t(n));
         for (int v = 0; v < n; ++v)
-            for (int c = 0; c < 3; ++c) packed[3 * std::size_t(v) + c] = L.src[kSrc.offset + std::size_t(v) * kSrc.stride + c];
+            for (int c = 0; c < 3; ++c)
+                packed[3 * std::size_t(v) + c] = L.src[kSrc.offset + std::size_t(v) * kSrc.stride + c];
         struct Layout {
             const float* src;
             BufferDescriptor srcDesc, dstDesc;
@@ -272,10 +273,10 @@ TEST(MeshNormals, WholeLevelPassEqualsPerVertexPassAndTheTripleForm) {
             const std::vector<double> reference =
                 tripleNormals(t, layout.src + layout.srcDesc.offset, layout.srcDesc.stride);
             double worst = 0.0;
-            for (int v = 0; v < n; ++v)
-                for (int c = 0; c < 3; ++c)
-                    worst = std::max(worst, std::abs(whole[layout.dstDesc.offset + std::size_t(v) * layout.dstDesc.stride + c] -
-                                                     reference[3 * std::size_t(v) + c]));
+            for (int v = 0; v < n; ++v) {
+                const float* got = &whole[layout.dstDesc.offset + std::size_t(v) * layout.dstDesc.stride];
+                for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] - reference[3 * std::size_t(v) + c]));
+            }
             EXPECT_LT(worst, 1e-6) << "unit normals against the triple form in double";
         }
     }
