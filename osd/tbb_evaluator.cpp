@@ -4,6 +4,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "kernels/limit_kernel.h"
 #include "kernels/mesh_normal_kernel.h"
@@ -62,6 +63,11 @@ void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
         // A vertex gathers ~4 faces of 3-4 corners: about the cost of a stencil, so the same grain.
         forBlocks(start, end, kGrain,
                   [&](int b, int e) { kernels::evalMeshNormals(s, srcStride, d, dstStride, arrays, b, e); });
+        return;
+    }
+    // On one thread the serial pass, which fuses what the parallel one does in four steps.
+    if (tbb::this_task_arena::max_concurrency() == 1) {
+        kernels::meshNormalsOfLevel(s, srcStride, d, dstStride, arrays, end, table.numFaces());
         return;
     }
     // The table's chunks of faces write disjoint rows (their seam vertices left out), so they run
