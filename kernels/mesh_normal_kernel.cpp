@@ -50,8 +50,8 @@ inline void prefetchCorner(const float* src, int srcStride, const float* dst, in
 constexpr int kPrefetchFaces = 12, kPrefetchCorners = 3;
 
 // Faces [begin, end) added into their corners' rows of dst (zeroed before the first face). With
-// skipSeams (a chunk run beside others) a seam vertex's corners are skipped (1-4 % of them: the
-// branch is predicted; adding them into a discarded row instead measured slower).
+// skipSeams (a chunk run beside others) a seam vertex's corners are skipped (1-4 % of them, so
+// the branch is well predicted).
 template <bool packed, bool skipSeams>
 void scatterFaces(const float* src, int srcStride, float* dst, int dstStride, const MeshNormalArrays& t,
                       int begin, int end) {
