@@ -1,6 +1,5 @@
-// What the MeshNormals evaluators read: for every vertex of one refined level, one triple of
-// corners per face around it, so that each vertex gathers its own normal (no atomics, no second
-// pass). The normal of vertex v is the normalised sum of the vector areas of its faces
+// What the MeshNormals evaluators read: one refined level's faces and, for every vertex, the faces
+// around it. The normal of vertex v is the normalised sum of the vector areas of its faces
 // (area-weighted face normals; docs/limit_evaluation.md). Holes are left out, as they are not
 // drawn. The Refiner stores every level's faces counter-clockwise (it reverses clockwise input
 // under Options::leftHanded), so the normals point to the outside of either kind of input.
@@ -14,19 +13,41 @@
 namespace quadtri {
 inline namespace v0 {
 
-// A triple (a, b, c) of vertex v adds (p_b - p_v) x (p_c - p_a): twice the vector area of a quad
-// (v, a, b, c) or, written (a, c, c), of a triangle (v, a, c). A larger face gives v one triple
-// per triangle of its fan from v, which sum to its vector area.
+// Two forms of the same sums (docs/limit_evaluation.md, "MeshNormals"):
+// - faces, for the host evaluators, which add each face's area into its corners' rows in face
+//   order (serially, or in parallel one chunk of facesPerChunk faces each). A vertex whose faces
+//   lie in more than one chunk (a seam vertex) is left out by the parallel chunks and gathers its
+//   faces itself (vertexFaces), in the same order; its corners carry kSeamCorner above the vertex
+//   index (kCornerIndexMask).
+// - corner triples, for the Vulkan shaders: a triple (a, b, c) of vertex v adds
+//   (p_b - p_v) x (p_c - p_a): a quad (v, a, b, c) or, written (a, c, c), a triangle (v, a, c); a
+//   larger face gives v one triple per triangle of its fan from v.
 struct MeshNormalTable {
-    int numVertices = 0;
-    std::vector<int> offsets{0};  // numVertices + 1: vertex v's triples are [offsets[v], offsets[v+1])
-    std::vector<int> corners;     // 3 per triple
+    static constexpr int kCornerIndexMask = (1 << 30) - 1;
+    static constexpr int kSeamCorner = 1 << 30;
 
+    int numVertices = 0;
+    int facesPerChunk = 1;                  // at most 16 chunks, each >= 4096 faces
+    std::vector<int> faceOffsets{0};        // drawn faces + 1
+    std::vector<int> faceCorners;           // flagged vertex indices, faceOffsets.back() of them
+    std::vector<int> vertexFaceOffsets{0};  // numVertices + 1: vertex v's faces are
+    std::vector<int> vertexFaces;           //   vertexFaces[vertexFaceOffsets[v] .. [v+1]), in face order
+    std::vector<int> seamVertices;          // ascending
+    std::vector<int> offsets{0};            // numVertices + 1: vertex v's triples are [offsets[v], offsets[v+1])
+    std::vector<int> corners;               // 3 per triple
+
+    int numFaces() const { return int(faceOffsets.size()) - 1; }
+    int numChunks() const { return (numFaces() + facesPerChunk - 1) / facesPerChunk; }
     int numTriples() const { return int(corners.size() / 3); }
-    std::size_t bytes() const { return (offsets.size() + corners.size()) * sizeof(int); }
+    std::size_t bytes() const {
+        return (faceOffsets.size() + faceCorners.size() + vertexFaceOffsets.size() + vertexFaces.size() +
+                seamVertices.size() + offsets.size() + corners.size()) *
+               sizeof(int);
+    }
 };
 
-// The table of one level's faces (refiner.faces(L)).
+// The table of one level's faces (refiner.faces(L)). Throws std::invalid_argument for a level of
+// more vertices than kCornerIndexMask.
 MeshNormalTable buildMeshNormalTable(const LevelFaces& faces);
 
 }  // namespace v0

@@ -31,8 +31,15 @@ void CpuEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
     if (!detail::checkMeshNormalArguments(src != nullptr, srcDesc, dst != nullptr, dstDesc, table.numVertices, start,
                                           end))
         return;
-    kernels::evalMeshNormals(src + srcDesc.offset, srcDesc.stride, dst + dstDesc.offset, dstDesc.stride,
-                             detail::meshNormalArrays(table), start, end);
+    const kernels::MeshNormalArrays arrays = detail::meshNormalArrays(table);
+    const float* s = src + srcDesc.offset;
+    float* d = dst + dstDesc.offset;
+    if (end - start < table.numVertices) {
+        kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, start, end);
+        return;
+    }
+    // A whole level face by face (kernels/mesh_normal_kernel.h).
+    kernels::meshNormalsOfLevel(s, srcDesc.stride, d, dstDesc.stride, arrays, end, table.numFaces());
 }
 
 void CpuEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,

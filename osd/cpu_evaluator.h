@@ -31,7 +31,8 @@ public:
 
     // Area-weighted vertex normals of one level (MeshNormalTable): normals of vertices [start,
     // end) (end < 0: all) from that level's 3-float positions, unit length, (0, 0, 0) for a
-    // vertex without faces of non-zero area. src and dst must not overlap. Throws
+    // vertex without faces of non-zero area. A whole level goes face by face, a shorter range
+    // vertex by vertex: the same bits (docs/limit_evaluation.md). src and dst must not overlap. Throws
     // std::invalid_argument on descriptors that are invalid or not of length 3, a bad range or a
     // missing buffer.
     static void EvalMeshNormals(const float* src, const BufferDescriptor& srcDesc, float* dst,

@@ -1,7 +1,10 @@
 #include <quadtri/osd/tbb_evaluator.h>
 
+#include <algorithm>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "kernels/limit_kernel.h"
 #include "kernels/mesh_normal_kernel.h"
@@ -73,10 +76,31 @@ void TbbEvaluator::EvalMeshNormals(const float* src, const BufferDescriptor& src
     const kernels::MeshNormalArrays arrays = detail::meshNormalArrays(table);
     const float* s = src + srcDesc.offset;
     float* d = dst + dstDesc.offset;
-    // A vertex gathers ~4 faces of 3-4 corners: about the cost of a stencil, so the same grain.
-    forBlocks(start, end, kGrain, [&](int b, int e) {
-        kernels::evalMeshNormals(s, srcDesc.stride, d, dstDesc.stride, arrays, b, e);
+    const int srcStride = srcDesc.stride, dstStride = dstDesc.stride;
+    if (end - start < table.numVertices) {
+        // A vertex gathers ~4 faces of 3-4 corners: about the cost of a stencil, so the same grain.
+        forBlocks(start, end, kGrain,
+                  [&](int b, int e) { kernels::evalMeshNormals(s, srcStride, d, dstStride, arrays, b, e); });
+        return;
+    }
+    // On one thread the serial pass, which fuses what the parallel one does in four steps.
+    if (tbb::this_task_arena::max_concurrency() == 1) {
+        kernels::meshNormalsOfLevel(s, srcStride, d, dstStride, arrays, end, table.numFaces());
+        return;
+    }
+    // The table's chunks of faces write disjoint rows (their seam vertices left out), so they run
+    // in parallel; then the seam vertices gather their faces. Each row sums its faces in face
+    // order, as CpuEvaluator's single pass does, whatever the thread count.
+    forBlocks(0, end, 8 * kGrain, [&](int b, int e) { kernels::zeroRows(d, dstStride, b, e); });
+    const int faces = table.numFaces(), chunk = table.facesPerChunk;
+    tbb::parallel_for(tbb::blocked_range<int>(0, table.numChunks(), 1), [&](const tbb::blocked_range<int>& r) {
+        kernels::scatterChunk(s, srcStride, d, dstStride, arrays, r.begin() * chunk, std::min(faces, r.end() * chunk));
     });
+    const int* seams = table.seamVertices.data();
+    forBlocks(0, int(table.seamVertices.size()), kGrain, [&](int b, int e) {
+        for (int i = b; i < e; ++i) kernels::sumOfFaces(s, srcStride, arrays, seams[i], d + long(seams[i]) * dstStride);
+    });
+    forBlocks(0, end, 8 * kGrain, [&](int b, int e) { kernels::normalizeRows(d, dstStride, b, e); });
 }
 
 void TbbEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,

@@ -1,6 +1,8 @@
-// GLSL mirror of kernels/mesh_normal_kernel.h: one invocation per vertex v, its normal the
-// normalised sum over its triples (a, b, c) of (p_b - p_v) x (p_c - p_a), the doubled vector
-// areas of the faces around it (MeshNormalTable), (0, 0, 0) when that sum is zero. Compiled to SPIR-V at build time and embedded in
+// The MeshNormals sums in GLSL (docs/limit_evaluation.md): one invocation per vertex v, its normal
+// the normalised sum over its corner triples (a, b, c) (MeshNormalTable::offsets, corners) of
+// (p_b - p_v) x (p_c - p_a), the doubled vector areas of the faces around it, (0, 0, 0) when that
+// sum is zero. The host loops (kernels/mesh_normal_kernel.h) add the same areas face by face, from
+// another corner, so the two agree to rounding. Compiled to SPIR-V at build time and embedded in
 // quadtri_vulkan (see shaders/embed_spirv.cmake).
 #version 450
 

@@ -1,10 +1,13 @@
 // MeshNormals: area-weighted vertex normals of a level (MeshNormalTable, EvalMeshNormals) on
 // hand-checked meshes (a cube's corners, a flat grid, two faces of different areas, a hole, a
 // vertex without faces), orientation (winding and Options::leftHanded), TbbEvaluator bitwise equal
-// to CpuEvaluator on refined bench tori, and the argument checks of both.
+// to CpuEvaluator on refined bench tori, the whole-level pass (face by face, chunks and seam
+// vertices) bitwise equal to the per-vertex one (ranges) and within 1e-6 of the corner-triple
+// form the Vulkan shaders sum, and the argument checks of both.
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -215,6 +218,66 @@ TEST(MeshNormals, TbbEqualsCpuBitwiseAndNormalsAreUnitAndOutward) {
             const double r = std::hypot(p[0], p[1]);
             const double out[3] = {p[0] - 2.0 * p[0] / r, p[1] - 2.0 * p[1] / r, p[2]};
             ASSERT_GT(out[0] * q[0] + out[1] * q[1] + out[2] * q[2], 0.0) << v;
+        }
+    }
+}
+
+// The corner-triple form (MeshNormalTable::offsets, corners) in double: the sums the Vulkan
+// shaders make, each vertex's faces in another order and from another corner than the host's.
+std::vector<double> tripleNormals(const MeshNormalTable& t, const float* src, int stride) {
+    std::vector<double> out(3 * std::size_t(t.numVertices), 0.0);
+    auto p = [&](int v, int c) { return double(src[std::size_t(v) * stride + c]); };
+    for (int v = 0; v < t.numVertices; ++v) {
+        double n[3] = {0, 0, 0};
+        for (int k = t.offsets[v]; k < t.offsets[v + 1]; ++k) {
+            const int* c = &t.corners[3 * std::size_t(k)];
+            const double x[3] = {p(c[1], 0) - p(v, 0), p(c[1], 1) - p(v, 1), p(c[1], 2) - p(v, 2)};
+            const double y[3] = {p(c[2], 0) - p(c[0], 0), p(c[2], 1) - p(c[0], 1), p(c[2], 2) - p(c[0], 2)};
+            n[0] += x[1] * y[2] - x[2] * y[1], n[1] += x[2] * y[0] - x[0] * y[2], n[2] += x[0] * y[1] - x[1] * y[0];
+        }
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (int c = 0; c < 3; ++c) out[3 * std::size_t(v) + c] = len > 0 ? n[c] / len : 0.0;
+    }
+    return out;
+}
+
+TEST(MeshNormals, WholeLevelPassEqualsPerVertexPassAndTheTripleForm) {
+    for (bench::TorusFaces faces : {bench::TorusFaces::Quads, bench::TorusFaces::Triangles, bench::TorusFaces::Mixed}) {
+        const Level L = refinedTorus(faces, Scheme::SchaeferWarren, 3);
+        const MeshNormalTable& t = L.table;
+        const int n = t.numVertices;
+        // The parallel form really has chunks and seams here.
+        ASSERT_GT(t.numChunks(), 2);
+        ASSERT_GT(t.seamVertices.size(), 0u);
+        // Packed positions too: the whole-level loops have a form for that layout of their own.
+        std::vector<float> packed(3 * std::size_t(n));
+        for (int v = 0; v < n; ++v)
+            for (int c = 0; c < 3; ++c)
+                packed[3 * std::size_t(v) + c] = L.src[kSrc.offset + std::size_t(v) * kSrc.stride + c];
+        struct Layout {
+            const float* src;
+            BufferDescriptor srcDesc, dstDesc;
+        };
+        for (const Layout& layout : {Layout{packed.data(), kPacked, kPacked}, Layout{L.src.data(), kSrc, kDst}}) {
+            const std::size_t floats =
+                std::size_t(layout.dstDesc.offset) + std::size_t(n) * std::size_t(layout.dstDesc.stride);
+            std::vector<float> whole(floats, -9.0f), perVertex(floats, -9.0f), tbb(floats, -9.0f);
+            CpuEvaluator::EvalMeshNormals(layout.src, layout.srcDesc, whole.data(), layout.dstDesc, t);
+            // Two ranges, each shorter than the level: the per-vertex gather.
+            CpuEvaluator::EvalMeshNormals(layout.src, layout.srcDesc, perVertex.data(), layout.dstDesc, t, 0, n / 3);
+            CpuEvaluator::EvalMeshNormals(layout.src, layout.srcDesc, perVertex.data(), layout.dstDesc, t, n / 3, n);
+            tbb::task_arena(2).execute(
+                [&] { TbbEvaluator::EvalMeshNormals(layout.src, layout.srcDesc, tbb.data(), layout.dstDesc, t); });
+            EXPECT_EQ(std::memcmp(whole.data(), perVertex.data(), floats * sizeof(float)), 0);
+            EXPECT_EQ(std::memcmp(whole.data(), tbb.data(), floats * sizeof(float)), 0);
+            const std::vector<double> reference =
+                tripleNormals(t, layout.src + layout.srcDesc.offset, layout.srcDesc.stride);
+            double worst = 0.0;
+            for (int v = 0; v < n; ++v) {
+                const float* got = &whole[layout.dstDesc.offset + std::size_t(v) * layout.dstDesc.stride];
+                for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] - reference[3 * std::size_t(v) + c]));
+            }
+            EXPECT_LT(worst, 1e-6) << "unit normals against the triple form in double";
         }
     }
 }

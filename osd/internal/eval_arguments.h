@@ -79,7 +79,8 @@ inline kernels::LimitStencilArrays limitArrays(const LimitStencilTable& table) {
 }
 
 inline kernels::MeshNormalArrays meshNormalArrays(const MeshNormalTable& table) {
-    return kernels::MeshNormalArrays{table.offsets.data(), table.corners.data()};
+    return kernels::MeshNormalArrays{table.faceOffsets.data(), table.faceCorners.data(),
+                                     table.vertexFaceOffsets.data(), table.vertexFaces.data()};
 }
 
 }  // namespace detail
