@@ -15,9 +15,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
-#include <unordered_map>
 #include <stdexcept>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 #include "far/internal/composition_memo.h"
@@ -152,9 +152,9 @@ Composed composeOne(const Outer& outer, const StencilTableD& inner, const int* c
     return {cls, row.size(), row.indices(), row.weights()};
 }
 
-// A run of composed stencils: their sizes, and their entries back to back, the weights as the
-// result stores them (double, or rounded to float).
-// A float part keeps the weights of unclassed stencils only: the others are the memo's.
+// A run of composed stencils: their sizes and classes, and their entries back to back, the
+// weights as the result stores them (double, or rounded to float). A float part keeps the
+// weights of unclassed stencils only: the others are the memo's.
 template <class Weight>
 struct Part {
     std::vector<int> sizes, classes;
