@@ -26,7 +26,11 @@ public:
 
     CompositionMemo(int serial, int numSources) : serial_(serial), stamp_(std::size_t(numSources), 0u), heads_(1024, -1) {}
 
-    bool usable() const { return serial_ <= kMaxSerial; }
+    // Whether to look stencils up at all: not once most lookups miss (shapes that hardly repeat,
+    // where the checks and the records would only add to the scatter row's work).
+    bool usable() const {
+        return serial_ <= kMaxSerial && (lookups_ < kTrialLookups || 4 * hits_ >= 3 * lookups_);
+    }
 
     // The stencil about to be composed: its outer mask, then per outer entry its inner
     // stencil's class and sources.
@@ -49,11 +53,18 @@ public:
         std::uint64_t h = std::uint64_t(std::uint32_t(mask_)) * 0x9E3779B97F4A7C15ull ^ std::uint64_t(n_);
         for (int c : classes_) h = (h ^ std::uint32_t(c)) * 0x100000001B3ull;
         hash_ = std::uint32_t(h ^ (h >> 32));
+        ++lookups_;
+        patternsTried_ = 0;
         for (int e = heads_[hash_ & (heads_.size() - 1)]; e >= 0; e = entries_[std::size_t(e)].next) {
             const Entry& entry = entries_[std::size_t(e)];
             if (entry.hash == hash_ && entry.mask == mask_ && entry.n == n_ && products_ == entry.products &&
-                std::memcmp(keys_.data() + entry.keyAt, classes_.data(), sizeof(int) * std::size_t(n_)) == 0 && collapsesAs(entry))
-                return classOf(e);
+                std::memcmp(keys_.data() + entry.keyAt, classes_.data(), sizeof(int) * std::size_t(n_)) == 0) {
+                if (collapsesAs(entry)) {
+                    ++hits_;
+                    return classOf(e);
+                }
+                if (++patternsTried_ == kMaxPatterns) return kNoClass;
+            }
         }
         return kNoClass;
     }
@@ -63,7 +74,9 @@ public:
     template <class EntryOf>
     int add(int size, const double* weights, EntryOf entryOf) {
         const int local = int(entries_.size());
-        if (local >= (1 << kLocalBits) || pattern_.size() + std::size_t(products_) > kMaxProducts) return kNoClass;
+        if (local >= (1 << kLocalBits) || pattern_.size() + std::size_t(products_) > kMaxProducts ||
+            patternsTried_ == kMaxPatterns)
+            return kNoClass;
         Entry entry{hash_, mask_, n_, int(keys_.size()), int(pattern_.size()), products_,
                     int(first_.size()), size, int(weights_.size()), -1};
         keys_.insert(keys_.end(), classes_.begin(), classes_.end());
@@ -96,6 +109,9 @@ public:
 private:
     // Products recorded over all classes: bounds the memo's memory (4 bytes a product).
     static constexpr std::size_t kMaxProducts = std::size_t(1) << 23;
+    // Patterns kept per key (a key with more is composed by the row past them), and lookups
+    // before the hit rate decides whether the memo stays on.
+    static constexpr int kMaxPatterns = 4, kTrialLookups = 256;
 
     struct Entry {
         std::uint32_t hash;
@@ -151,7 +167,8 @@ private:
     std::vector<double> weights_;
     std::vector<float> floats_;
     // The stencil being looked up.
-    int mask_ = 0, n_ = 0, products_ = 0;
+    int mask_ = 0, n_ = 0, products_ = 0, patternsTried_ = 0;
+    long lookups_ = 0, hits_ = 0;
     std::uint32_t hash_ = 0;
     std::vector<int> classes_, productSources_, sources_;  // sources_: the output entries' sources
 };
