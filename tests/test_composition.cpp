@@ -1,9 +1,8 @@
 // The composition of stencil tables (far/compose_stencils.cpp) against a straightforward one
 // kept here: each composed stencil a list of (source, sum) merged by linear search, sources in
 // the order first reached, each sum added up in the order of the outer entries and then of the
-// inner ones. The library's dense scatter row does the same arithmetic in the same order, and its
-// memo reuses only what that arithmetic gave for the same terms, so every table must come out
-// bitwise equal: double tables, float tables with their weight pools, and
+// inner ones. The library's dense scatter row does the same arithmetic in the same order, so every
+// table must come out bitwise equal: double tables, float tables with their weight pools, and
 // the factorized tables of the Refiner for positions, face-varying values and varying data.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -116,11 +115,12 @@ TEST(Composition, HandMadeTablesAsTheReference) {
     expectSame(composeStencilsToFloat(outer, inner), toFloatTable(want), "float");
 }
 
-// Stencils that look alike to the composition's memo (the same pooled outer mask over inner
-// stencils of one class) but whose inner stencils share sources differently: A and B share a
+// Stencils that look alike (the same pooled outer mask over inner stencils of equal weights, what
+// a composition that reused its work by shape would key on) but whose inner stencils share
+// sources differently: A and B share a
 // source, A and C share none, A and A' read the same two sources in the other order (a pattern
 // with no collapse fits their products, but would give one source two entries). Every one must
-// come out as the reference composes it, and so must a second level over the first's classes.
+// come out as the reference composes it, and so must a second level over the first.
 TEST(Composition, LookAlikeStencilsAsTheReference) {
     const std::vector<double> half = {0.5, 0.25};
     const StencilTableD inner = tableOf(5, {{0, 1}, {1, 2}, {3, 4}, {1, 0}}, {half, half, half, half});

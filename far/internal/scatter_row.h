@@ -48,8 +48,6 @@ public:
     }
 
     int size() const { return size_; }
-    // The entry of `source` in the stencil, -1 outside it.
-    int entryOf(int source) const { return slot_[std::size_t(source)]; }
     const int* indices() const { return indices_.data(); }
     const double* weights() const { return weights_.data(); }
 

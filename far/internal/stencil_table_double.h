@@ -18,10 +18,6 @@ struct StencilTableD {
     std::vector<int> offsets;
     std::vector<int> indices;
     std::vector<double> weights;
-    // Per stencil, where a composition made the table: stencils of one class (>= 0) have
-    // bitwise-equal weights, -1 is a class of its own (far/internal/composition_memo.h). Empty
-    // otherwise; a table whose weights change must drop it.
-    std::vector<int> classes;
 };
 
 // The float table stored for evaluation (weights rounded to float, then interned), and back to
