@@ -115,6 +115,29 @@ TEST(Composition, HandMadeTablesAsTheReference) {
     expectSame(composeStencilsToFloat(outer, inner), toFloatTable(want), "float");
 }
 
+// Stencils that look alike (the same pooled outer mask over inner stencils of equal weights, what
+// a composition that reused its work by shape would key on) but whose inner stencils share
+// sources differently: A and B share a
+// source, A and C share none, A and A' read the same two sources in the other order (a pattern
+// with no collapse fits their products, but would give one source two entries). Every one must
+// come out as the reference composes it, and so must a second level over the first.
+TEST(Composition, LookAlikeStencilsAsTheReference) {
+    const std::vector<double> half = {0.5, 0.25};
+    const StencilTableD inner = tableOf(5, {{0, 1}, {1, 2}, {3, 4}, {1, 0}}, {half, half, half, half});
+    const int A = 0, B = 1, C = 2, A2 = 3;
+    const std::vector<double> mask = {0.75, -0.5};
+    const StencilTable outer = toFloatTable(
+        tableOf(4, {{A, C}, {A, B}, {A, C}, {A, A2}, {C, A}, {A, B}, {B, A}, {A2, A}}, std::vector<std::vector<double>>(8, mask)));
+    const StencilTableD want = referenceCompose(toDoubleTable(outer), inner);
+    expectSame(composeStencils(outer, inner), want, "double");
+    expectSame(composeStencilsToFloat(outer, inner), toFloatTable(want), "float");
+    const StencilTable second = toFloatTable(
+        tableOf(8, {{0, 1}, {2, 5}, {0, 2}, {3, 3}, {7, 3}, {1, 5}, {4, 6}}, std::vector<std::vector<double>>(7, {0.5, 0.125})));
+    const StencilTableD want2 = referenceCompose(toDoubleTable(second), want);
+    expectSame(composeStencils(second, composeStencils(outer, inner)), want2, "second level, double");
+    expectSame(composeStencilsToFloat(second, composeStencils(outer, inner)), toFloatTable(want2), "second level, float");
+}
+
 TEST(Composition, RefusesAtTheSameBytes) {
     const StencilTableD inner = tableOf(4, {{0, 1}, {2, 3}}, {{0.5, 0.5}, {0.5, 0.5}});
     const StencilTableD outer = tableOf(2, {{0, 1}, {0, 1}, {1}}, {{0.5, 0.5}, {0.5, 0.5}, {1.0}});
