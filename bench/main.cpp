@@ -63,6 +63,8 @@ constexpr int kSphereSegments = 2000, kSphereRings = 8;
 // split into 10 082 triangles, and the demo's mixed limb (data/mixed_limb.obj, 9 984 faces:
 // quads, a triangulated elbow and end dome, three creases).
 constexpr int kFrameTriTorus = 71;
+// The big cage: 1000 x 1000 quads.
+constexpr int kBigTorus = 1000;
 const char* const kLimbName = "mixed_limb";
 
 ControlMesh makeMesh(const std::string& name) {
@@ -70,7 +72,7 @@ ControlMesh makeMesh(const std::string& name) {
         ControlMesh sphere = makeUvSphere(kSphereSegments, kSphereRings, poles);
         if (sphere.name == name) return sphere;
     }
-    for (int n : {kFrameTriTorus, 100, 320})
+    for (int n : {kFrameTriTorus, 100, 320, kBigTorus})
         for (TorusFaces faces : {TorusFaces::Quads, TorusFaces::Triangles, TorusFaces::Mixed})
             if (torusName(n, faces) == name) return makeTorus(n, faces);
     throw std::logic_error("no generator for the mesh " + name);
@@ -101,6 +103,8 @@ std::vector<CaseSpec> caseList(bool quick) {
     // vertex near one reads its whole ring), and each of its timed builds takes minutes.
     for (int level = 1; level <= std::min(sphereLevels, 2); ++level)
         cases.push_back({quadSphere, Scheme::StamLoop, OsdScheme::Catmark, level});
+    // A big cage: a million quads at level 2 (16 million vertices), on both sides.
+    if (!quick) cases.push_back({torusName(kBigTorus, TorusFaces::Quads), Scheme::StamLoop, OsdScheme::Catmark, 2});
     return cases;
 }
 
@@ -298,7 +302,8 @@ int usage(const char* message) {
                  "  --frame      only the frame cases (skin + level N's limit positions and normals)\n"
                  "  --json FILE  also write the figures as JSON to FILE\n"
                  "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
-                 "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad;\n"
+                 "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad,\n"
+                 "               torus1000_quad;\n"
                  "               frames: torus100_quad, torus71_tri, mixed_limb), e.g. to profile it\n";
     return message ? 2 : 0;
 }
