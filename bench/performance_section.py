@@ -373,8 +373,9 @@ def frame_summary(r):
     lines += ["", "Frames per second are 1000 / the median frame (in brackets: of the slowest and the fastest frame);"
               " each evaluator's faster route of the two limit routes; OpenSubdiv's fastest evaluator like for like"
               " (one thread: `Osd::CpuEvaluator` or Far's templates; threads and Vulkan: any, `Osd::OmpEvaluator`"
-              " included); the mesh-normal frame (quadtri alone) evaluates the per-level tables to level N and"
-              " its mesh normals:", ""]
+              " included); the phases' normals are 0 where the route's evaluation pass gives the normals too (a"
+              " limit table's positions and tangents in one pass); the mesh-normal frame (quadtri alone) evaluates"
+              " the per-level tables to level N and its mesh normals:", ""]
     return lines + frame_table(r)
 
 
