@@ -62,12 +62,7 @@ void LimitCase::meshNormals(bool threaded, std::vector<float>& normal) {
 
 void LimitCase::prepare() {
     const PeakMemory peak;
-    TopologyDescriptor desc;
-    desc.numVertices = mesh_.numVertices;
-    desc.numFaces = mesh_.numFaces();
-    desc.numVertsPerFace = mesh_.faceSizes.data();
-    desc.faceVertIndices = mesh_.faceVerts.data();
-    refiner_ = std::make_unique<Refiner>(desc, options_);
+    refiner_ = std::make_unique<Refiner>(mesh_.descriptor(), options_);
     refiner_->refineUniform(level_);
     limitOverLevel_ = refiner_->limitStencils(level_);
     try {

@@ -218,15 +218,6 @@ LimitCaseResult runLimitCase(const ControlMesh& mesh, const CaseSpec& spec, int 
 // Where the two sides' frames are compared before timing: well into the bend (as the demo).
 constexpr float kFrameCheckRadians = 1.2f;
 
-TopologyDescriptor descriptorOf(const ControlMesh& mesh) {
-    TopologyDescriptor desc;
-    desc.numVertices = mesh.numVertices;
-    desc.numFaces = mesh.numFaces();
-    desc.numVertsPerFace = mesh.faceSizes.data();
-    desc.faceVertIndices = mesh.faceVerts.data();
-    return desc;
-}
-
 // The frame of one cage and level on quadtri's side (every route and evaluator) and, for a pure
 // cage, OpenSubdiv's; both sides' frames at the same bend checked to agree first. `limb` is the
 // mixed limb, read once by the caller; `mesh` the torus otherwise.
@@ -248,7 +239,7 @@ FrameCaseResult runFrameCase(const CaseSpec& spec, const ControlMesh* mesh, cons
     } else {
         result.controlVertices = mesh->numVertices;
         result.faces = mesh->numFaces();
-        qt = std::make_unique<FrameCase>(spec.mesh, descriptorOf(*mesh), options, mesh->positions, spec.level, vulkan);
+        qt = std::make_unique<FrameCase>(spec.mesh, mesh->descriptor(), options, mesh->positions, spec.level, vulkan);
     }
     qt->prepare(kFrameCheckRadians);
     result.points = qt->numPoints();

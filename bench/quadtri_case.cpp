@@ -53,12 +53,7 @@ QuadtriCase::QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level, bool
 QuadtriCase::~QuadtriCase() = default;
 
 std::unique_ptr<Refiner> QuadtriCase::build() const {
-    TopologyDescriptor desc;
-    desc.numVertices = mesh_.numVertices;
-    desc.numFaces = mesh_.numFaces();
-    desc.numVertsPerFace = mesh_.faceSizes.data();
-    desc.faceVertIndices = mesh_.faceVerts.data();
-    auto refiner = std::make_unique<Refiner>(desc, options_);
+    auto refiner = std::make_unique<Refiner>(mesh_.descriptor(), options_);
     refiner->refineUniform(level_);
     return refiner;
 }

@@ -6,6 +6,15 @@
 
 namespace quadtri::bench {
 
+TopologyDescriptor ControlMesh::descriptor() const {
+    TopologyDescriptor desc;
+    desc.numVertices = numVertices;
+    desc.numFaces = numFaces();
+    desc.numVertsPerFace = faceSizes.data();
+    desc.faceVertIndices = faceVerts.data();
+    return desc;
+}
+
 double ControlMesh::boundingBoxDiagonal() const {
     double lo[3], hi[3];
     std::fill(lo, lo + 3, std::numeric_limits<double>::max());

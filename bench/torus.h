@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <quadtri/far/topology.h>
+
 namespace quadtri::bench {
 
 struct ControlMesh {
@@ -14,6 +16,8 @@ struct ControlMesh {
     std::vector<float> positions;  // xyz per vertex
 
     int numFaces() const { return int(faceSizes.size()); }
+    // The mesh as a Refiner reads it (pointing into this mesh).
+    TopologyDescriptor descriptor() const;
     double boundingBoxDiagonal() const;
 };
 

@@ -182,11 +182,7 @@ TEST(Composition, FactorizedTablesAsTheReference) {
 // Poles of valence 64: composed stencils near them pass a hundred sources.
 TEST(Composition, HighValenceAsTheReference) {
     const bench::ControlMesh sphere = bench::makeUvSphere(64, 6, bench::SpherePoles::TriangleFans);
-    TopologyDescriptor desc;
-    desc.numVertices = sphere.numVertices;
-    desc.numFaces = sphere.numFaces();
-    desc.numVertsPerFace = sphere.faceSizes.data();
-    desc.faceVertIndices = sphere.faceVerts.data();
+    const TopologyDescriptor desc = sphere.descriptor();
     Refiner refiner(desc, Options());
     refiner.refineUniform(3);
     checkRefiner(refiner, 3, sphere.name);
@@ -195,11 +191,7 @@ TEST(Composition, HighValenceAsTheReference) {
 // Many waves of parts (far/compose_stencils.cpp): one thread and four give the same tables.
 TEST(Composition, SameTablesOnAnyNumberOfThreads) {
     const bench::ControlMesh torus = bench::makeTorus(40, bench::TorusFaces::Mixed);
-    TopologyDescriptor desc;
-    desc.numVertices = torus.numVertices;
-    desc.numFaces = torus.numFaces();
-    desc.numVertsPerFace = torus.faceSizes.data();
-    desc.faceVertIndices = torus.faceVerts.data();
+    const TopologyDescriptor desc = torus.descriptor();
     Options options;
     options.scheme = Scheme::SchaeferWarren;
     Refiner refiner(desc, options);
