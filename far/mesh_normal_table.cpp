@@ -9,38 +9,20 @@ inline namespace v0 {
 
 namespace {
 
-// Calls add(v, a, b, c) for every corner triple of face `f` (corners c, size n), in corner order.
-template <class Add>
-void forEachTriple(const int* c, int n, Add&& add) {
-    for (int k = 0; k < n; ++k) {
-        const int v = c[k];
-        auto at = [&](int step) { return c[(k + step) % n]; };
-        if (n == 3) {
-            add(v, at(1), at(2), at(2));
-        } else if (n == 4) {
-            add(v, at(1), at(2), at(3));
-        } else {
-            for (int j = 1; j + 1 < n; ++j) add(v, at(j), at(j + 1), at(j + 1));
-        }
-    }
-}
-
-// Counting sort by vertex: the offsets (numVertices + 1) of the entries count(emit) reports per
-// vertex (emit(v) once per entry), `entries` sized to `width` ints per entry, then fill(next)
-// writing each vertex's entries in the order count reported them.
-template <class Count, class Fill>
-std::vector<int> sortByVertex(int numVertices, Count&& count, std::vector<int>& entries, int width, Fill&& fill) {
-    std::vector<int> offsets(std::size_t(numVertices) + 1, 0);
-    count([&](int v) { ++offsets[std::size_t(v) + 1]; });
-    for (std::size_t v = 1; v < offsets.size(); ++v) offsets[v] += offsets[v - 1];
-    entries.resize(std::size_t(width) * std::size_t(offsets.back()));
-    std::vector<int> next(offsets.begin(), offsets.end() - 1);
-    fill(next);
-    return offsets;
-}
-
 // Chunks of at least 4096 faces, at most 16 of them: enough for 16 threads, few seam vertices.
 int facesPerChunk(int faces) { return std::max(4096, (faces + 15) / 16); }
+
+// Each vertex's faces in face order (a counting sort by vertex of the faces' corners).
+void sortFacesByVertex(MeshNormalTable& t) {
+    std::vector<int>& offsets = t.vertexFaceOffsets;
+    offsets.assign(std::size_t(t.numVertices) + 1, 0);
+    for (int c : t.faceCorners) ++offsets[std::size_t(c) + 1];
+    for (std::size_t v = 1; v < offsets.size(); ++v) offsets[v] += offsets[v - 1];
+    t.vertexFaces.resize(std::size_t(offsets.back()));
+    std::vector<int> next(offsets.begin(), offsets.end() - 1);
+    for (int f = 0; f < t.numFaces(); ++f)
+        for (int k = t.faceOffsets[f]; k < t.faceOffsets[f + 1]; ++k) t.vertexFaces[next[t.faceCorners[k]]++] = f;
+}
 
 // Flags the corners of the seam vertices (MeshNormalTable's comment): those whose faces lie in
 // more than one chunk.
@@ -70,40 +52,9 @@ MeshNormalTable buildMeshNormalTable(const LevelFaces& faces) {
         t.faceCorners.insert(t.faceCorners.end(), c.begin(), c.begin() + faces.faceSize(f));
         t.faceOffsets.push_back(int(t.faceCorners.size()));
     }
-    const int drawn = t.numFaces();
-
-    t.vertexFaceOffsets = sortByVertex(
-        t.numVertices,
-        [&](auto&& emit) {
-            for (int c : t.faceCorners) emit(c);
-        },
-        t.vertexFaces, 1,
-        [&](std::vector<int>& next) {
-            for (int f = 0; f < drawn; ++f)
-                for (int k = t.faceOffsets[f]; k < t.faceOffsets[f + 1]; ++k)
-                    t.vertexFaces[next[t.faceCorners[k]]++] = f;
-        });
-    t.facesPerChunk = facesPerChunk(drawn);
+    sortFacesByVertex(t);
+    t.facesPerChunk = facesPerChunk(t.numFaces());
     flagSeams(t);
-
-    auto eachDrawnFace = [&](auto&& body) {
-        for (int f = 0; f < faces.numFaces(); ++f)
-            if (!faces.isHole(f)) body(faces.verticesOfFace(f).begin(), faces.faceSize(f));
-    };
-    t.offsets = sortByVertex(
-        t.numVertices,
-        [&](auto&& emit) {
-            eachDrawnFace([&](const int* c, int n) { forEachTriple(c, n, [&](int v, int, int, int) { emit(v); }); });
-        },
-        t.corners, 3,
-        [&](std::vector<int>& next) {
-            eachDrawnFace([&](const int* c, int n) {
-                forEachTriple(c, n, [&](int v, int a, int b, int d) {
-                    int* out = &t.corners[3 * std::size_t(next[v]++)];
-                    out[0] = a, out[1] = b, out[2] = d;
-                });
-            });
-        });
     return t;
 }
 

@@ -13,15 +13,12 @@
 namespace quadtri {
 inline namespace v0 {
 
-// Two forms of the same sums (docs/limit_evaluation.md, "MeshNormals"):
-// - faces, for the host evaluators, which add each face's area into its corners' rows in face
-//   order (serially, or in parallel one chunk of facesPerChunk faces each). A vertex whose faces
-//   lie in more than one chunk (a seam vertex) is left out by the parallel chunks and gathers its
-//   faces itself (vertexFaces), in the same order; its corners carry kSeamCorner above the vertex
-//   index (kCornerIndexMask).
-// - corner triples, for the Vulkan shaders: a triple (a, b, c) of vertex v adds
-//   (p_b - p_v) x (p_c - p_a): a quad (v, a, b, c) or, written (a, c, c), a triangle (v, a, c); a
-//   larger face gives v one triple per triangle of its fan from v.
+// The level's drawn faces and each vertex's faces in face order (docs/limit_evaluation.md,
+// "MeshNormals"). The host evaluators add each face's area into its corners' rows in face order
+// (serially, or in parallel one chunk of facesPerChunk faces each); a vertex whose faces lie in
+// more than one chunk (a seam vertex) is left out by the parallel chunks and gathers its faces
+// itself (vertexFaces), in the same order; its corners carry kSeamCorner above the vertex index
+// (kCornerIndexMask). The Vulkan shaders and ranges shorter than the level gather per vertex.
 struct MeshNormalTable {
     static constexpr int kCornerIndexMask = (1 << 30) - 1;
     static constexpr int kSeamCorner = 1 << 30;
@@ -33,15 +30,12 @@ struct MeshNormalTable {
     std::vector<int> vertexFaceOffsets{0};  // numVertices + 1: vertex v's faces are
     std::vector<int> vertexFaces;           //   vertexFaces[vertexFaceOffsets[v] .. [v+1]), in face order
     std::vector<int> seamVertices;          // ascending
-    std::vector<int> offsets{0};            // numVertices + 1: vertex v's triples are [offsets[v], offsets[v+1])
-    std::vector<int> corners;               // 3 per triple
 
     int numFaces() const { return int(faceOffsets.size()) - 1; }
     int numChunks() const { return (numFaces() + facesPerChunk - 1) / facesPerChunk; }
-    int numTriples() const { return int(corners.size() / 3); }
     std::size_t bytes() const {
         return (faceOffsets.size() + faceCorners.size() + vertexFaceOffsets.size() + vertexFaces.size() +
-                seamVertices.size() + offsets.size() + corners.size()) *
+                seamVertices.size()) *
                sizeof(int);
     }
 };

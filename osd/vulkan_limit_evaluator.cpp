@@ -23,13 +23,14 @@ namespace {
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
 // table (5: sizes, offsets, the index pool, weight offsets, the weight pool), source, 4 outputs,
-// fallback table (2), then the two pools and the source again as texel buffers
+// fallback table (4), then the two pools and the source again as texel buffers
 // (shaders/limit_eval.comp).
-const std::vector<VkDescriptorType> kLimitBindings = {kStorage, kStorage, kStorage, kStorage, kStorage,
-                                                      kStorage, kStorage, kStorage, kStorage, kStorage,
+constexpr std::size_t kFirstTexelBinding = 14;
+const std::vector<VkDescriptorType> kLimitBindings = {kStorage, kStorage, kStorage, kStorage, kStorage, kStorage,
+                                                      kStorage, kStorage, kStorage, kStorage, kStorage, kStorage,
                                                       kStorage, kStorage, kTexels,  kTexels,  kTexels};
 constexpr uint32_t kLimitPushWords = 7;  // 5 float offsets, start, end
-const std::vector<VkDescriptorType> kNormalBindings(4, kStorage);  // table (2), source, destination
+const std::vector<VkDescriptorType> kNormalBindings(6, kStorage);  // table (4), source, destination
 constexpr uint32_t kNormalPushWords = 4;
 
 // Floats needed to hold `count` elements of `d` (0 when count is 0).
@@ -112,18 +113,18 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
     const bool useFallback = fallback && present[3];
     if (useFallback) {
         mask |= 16;
-        for (VkBuffer b : {fallback->offsets(), fallback->corners()}) infos.push_back({b, 0, VK_WHOLE_SIZE});
+        for (VkBuffer b : fallback->buffers()) infos.push_back({b, 0, VK_WHOLE_SIZE});
     } else {
-        for (int k = 0; k < 2; ++k) infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
+        for (int k = 0; k < 4; ++k) infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
     }
     constants.push_back(mask);
     const bool poolTexels = table.indexTexels() != VK_NULL_HANDLE;
     constants.push_back(poolTexels);
     constants.push_back(sourceTexels);
     std::vector<VkBufferView> texels(kLimitBindings.size(), VK_NULL_HANDLE);
-    texels[12] = poolTexels ? table.indexTexels() : unusedIndexTexels_.view();
-    texels[13] = poolTexels ? table.weightTexels() : unusedWeightTexels_.view();
-    texels[14] = sourceTexels ? src.texels : unusedWeightTexels_.view();
+    texels[kFirstTexelBinding] = poolTexels ? table.indexTexels() : unusedIndexTexels_.view();
+    texels[kFirstTexelBinding + 1] = poolTexels ? table.weightTexels() : unusedWeightTexels_.view();
+    texels[kFirstTexelBinding + 2] = sourceTexels ? src.texels : unusedWeightTexels_.view();
     limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end,
                    texels);
 }
@@ -183,8 +184,10 @@ void VulkanLimitEvaluator::recordNormals(VkCommandBuffer cmd, bool waited, const
         throw std::invalid_argument("EvalMeshNormals: the table belongs to another VkDevice");
     const detail::BoundBuffer s = detail::bindAligned(ctx_, src.buffer, src.byteOffset, srcDesc, call);
     const detail::BoundBuffer d = detail::bindAligned(ctx_, dst.buffer, dst.byteOffset, dstDesc, call);
-    const std::vector<VkDescriptorBufferInfo> infos = {
-        {table.offsets(), 0, VK_WHOLE_SIZE}, {table.corners(), 0, VK_WHOLE_SIZE}, s.info, d.info};
+    std::vector<VkDescriptorBufferInfo> infos;
+    for (VkBuffer b : table.buffers()) infos.push_back({b, 0, VK_WHOLE_SIZE});
+    infos.push_back(s.info);
+    infos.push_back(d.info);
     const std::vector<int32_t> constants{srcDesc.stride, dstDesc.stride};
     normals_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants,
                      {s.floatOffset, d.floatOffset}, start, end);

@@ -27,12 +27,15 @@ void uploadAll(VulkanContext& ctx, detail::DeviceBuffer (&to)[N], const void* co
 
 VulkanMeshNormalTable::VulkanMeshNormalTable(VulkanContext& ctx, const MeshNormalTable& t)
     : device_(ctx.device()), numVertices_(t.numVertices) {
-    if (t.offsets.size() != std::size_t(t.numVertices) + 1 || 3 * std::size_t(t.offsets.back()) != t.corners.size())
+    if (t.faceOffsets.empty() || std::size_t(t.faceOffsets.back()) != t.faceCorners.size() ||
+        t.vertexFaceOffsets.size() != std::size_t(t.numVertices) + 1 ||
+        std::size_t(t.vertexFaceOffsets.back()) != t.vertexFaces.size())
         throw std::invalid_argument("VulkanMeshNormalTable: inconsistent MeshNormalTable arrays");
-    detail::DeviceBuffer b[2];
-    uploadAll(ctx, b, {t.offsets.data(), t.corners.data()},
-              {t.offsets.size() * sizeof(int), t.corners.size() * sizeof(int)});
-    offsets_ = std::move(b[0]), corners_ = std::move(b[1]);
+    const std::vector<int>* arrays[4] = {&t.faceOffsets, &t.faceCorners, &t.vertexFaceOffsets, &t.vertexFaces};
+    uploadAll(ctx, arrays_, {arrays[0]->data(), arrays[1]->data(), arrays[2]->data(), arrays[3]->data()},
+              {arrays[0]->size() * sizeof(int), arrays[1]->size() * sizeof(int), arrays[2]->size() * sizeof(int),
+               arrays[3]->size() * sizeof(int)});
+    for (int k = 0; k < 4; ++k) handles_[k] = arrays_[k].buffer();
 }
 
 }  // namespace v0

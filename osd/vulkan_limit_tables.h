@@ -28,18 +28,21 @@ public:
 
 class VulkanMeshNormalTable {
 public:
-    // Copies the table's two arrays through one staging buffer (waits).
+    // Copies the table's faces and each vertex's faces (faceOffsets, faceCorners, vertexFaceOffsets,
+    // vertexFaces) through one staging buffer (waits); std::invalid_argument when they are
+    // inconsistent. The chunks and seams are the host's only.
     VulkanMeshNormalTable(VulkanContext& ctx, const MeshNormalTable& table);
 
     int numVertices() const { return numVertices_; }
-    VkBuffer offsets() const { return offsets_.buffer(); }
-    VkBuffer corners() const { return corners_.buffer(); }
+    // The four arrays in that order, as the shaders bind them.
+    const VkBuffer (&buffers() const)[4] { return handles_; }
     VkDevice device() const { return device_; }
 
 private:
     VkDevice device_;
     int numVertices_ = 0;
-    detail::DeviceBuffer offsets_, corners_;
+    detail::DeviceBuffer arrays_[4];
+    VkBuffer handles_[4] = {};
 };
 
 }  // namespace v0

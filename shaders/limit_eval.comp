@@ -16,12 +16,12 @@ layout(constant_id = 4) const int DU_STRIDE = 3;
 layout(constant_id = 5) const int DV_STRIDE = 3;
 layout(constant_id = 6) const int NORMAL_STRIDE = 3;
 layout(constant_id = 7) const int OUTPUTS = 15;     // bits: position, dU, dV, normal, fallback
-// Whether the index and weight pools are read through the texel buffers of bindings 12 and 13
+// Whether the index and weight pools are read through the texel buffers of bindings 14 and 15
 // (lavapipe turns a texel fetch into a vector gather, a storage-buffer load into a branch per
 // lane: docs/architecture.md, "Vulkan on lavapipe") or, where the pools exceed
 // the context's texelBufferLimit(), through the storage buffers of bindings 2 and 4.
 layout(constant_id = 8) const bool POOL_TEXELS = true;
-// Whether the source is read through the texel buffer of binding 14 (the caller gave a view).
+// Whether the source is read through the texel buffer of binding 16 (the caller gave a view).
 layout(constant_id = 9) const bool SOURCE_TEXELS = false;
 
 const float DEGENERATE_SINE = 1e-4;
@@ -41,11 +41,14 @@ layout(std430, set = 0, binding = 6) writeonly buffer Position { float position[
 layout(std430, set = 0, binding = 7) writeonly buffer Du { float du[]; };
 layout(std430, set = 0, binding = 8) writeonly buffer Dv { float dv[]; };
 layout(std430, set = 0, binding = 9) writeonly buffer Normal { float normal[]; };
-layout(std430, set = 0, binding = 10) readonly buffer FallbackOffsets { int fallbackOffsets[]; };
-layout(std430, set = 0, binding = 11) readonly buffer FallbackCorners { int fallbackCorners[]; };
-layout(set = 0, binding = 12) uniform isamplerBuffer indexTexels;  // the same pools as texels
-layout(set = 0, binding = 13) uniform samplerBuffer weightTexels;
-layout(set = 0, binding = 14) uniform samplerBuffer srcTexels;  // pc.srcOffset counts from its texel 0
+// The fallback MeshNormalTable (as shaders/mesh_normals.comp reads it).
+layout(std430, set = 0, binding = 10) readonly buffer FaceOffsets { int faceOffsets[]; };
+layout(std430, set = 0, binding = 11) readonly buffer FaceCorners { int faceCorners[]; };
+layout(std430, set = 0, binding = 12) readonly buffer VertexFaceOffsets { int vertexFaceOffsets[]; };
+layout(std430, set = 0, binding = 13) readonly buffer VertexFaces { int vertexFaces[]; };
+layout(set = 0, binding = 14) uniform isamplerBuffer indexTexels;  // the same pools as texels
+layout(set = 0, binding = 15) uniform samplerBuffer weightTexels;
+layout(set = 0, binding = 16) uniform samplerBuffer srcTexels;  // pc.srcOffset counts from its texel 0
 
 layout(push_constant) uniform Push {
     uint srcOffset;  // floats before element 0 in each bound range
@@ -67,12 +70,28 @@ vec3 source(int v) {
     return vec3(sourceFloat(s), sourceFloat(s + 1u), sourceFloat(s + 2u));
 }
 
+const int CORNER_INDEX_MASK = (1 << 30) - 1;  // MeshNormalTable::kCornerIndexMask
+
+vec3 corner(int k) { return source(faceCorners[k] & CORNER_INDEX_MASK); }
+
+// (r - p) x (s - q) of corners p, q, r, s: twice a quad's vector area (kernels/mesh_normal_kernel.h).
+vec3 facet(int p, int q, int r, int s) { return cross(corner(r) - corner(p), corner(s) - corner(q)); }
+
+// Twice face f's vector area, as the host's faceArea: a triangle as (c0, c1, c2, c2), a larger
+// face as a fan of quads (c0, ck, ck+1, ck+2) closed by such a triangle.
+vec3 faceArea(int f) {
+    const int b = faceOffsets[f], n = faceOffsets[f + 1] - b;
+    if (n == 3) return facet(b, b + 1, b + 2, b + 2);
+    vec3 a = facet(b, b + 1, b + 2, b + 3);
+    int k = 3;
+    for (; k + 2 < n; k += 2) a += facet(b, b + k, b + k + 1, b + k + 2);
+    if (k + 1 < n) a += facet(b, b + k, b + k + 1, b + k + 1);
+    return a;
+}
+
 vec3 meshNormal(uint v) {
-    const vec3 p = source(int(v));
     vec3 n = vec3(0.0);
-    for (int k = fallbackOffsets[v]; k < fallbackOffsets[v + 1u]; ++k)
-        n += cross(source(fallbackCorners[3 * k + 1]) - p,
-                   source(fallbackCorners[3 * k + 2]) - source(fallbackCorners[3 * k]));
+    for (int k = vertexFaceOffsets[v]; k < vertexFaceOffsets[v + 1u]; ++k) n += faceArea(vertexFaces[k]);
     const float len2 = dot(n, n);
     return n * (len2 > 0.0 ? inversesqrt(len2) : 0.0);
 }

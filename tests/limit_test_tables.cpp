@@ -62,9 +62,13 @@ CornerLevel cornerLevel(int level) {
     LimitStencilTable& t = out.table;
     t.numSourceVertices = mn.numVertices;
     for (int v = 0; v < mn.numVertices; ++v) {
-        // The first triple: (next, opposite, previous) of a quad, (next, previous, previous) of a triangle.
-        const int* triple = &mn.corners[3 * std::size_t(mn.offsets[v])];
-        const int next = triple[0], prev = triple[2];
+        // v's neighbours after and before it around its first face.
+        const int f = mn.vertexFaces[std::size_t(mn.vertexFaceOffsets[v])];
+        const int first = mn.faceOffsets[f], n = mn.faceOffsets[f + 1] - first;
+        auto vertexAt = [&](int k) { return mn.faceCorners[first + (k + n) % n] & MeshNormalTable::kCornerIndexMask; };
+        int at = 0;
+        while (vertexAt(at) != v) ++at;
+        const int next = vertexAt(at + 1), prev = vertexAt(at - 1);
         t.sizes.push_back(3);
         t.offsets.push_back(int(t.indices.size()));
         t.indices.insert(t.indices.end(), {v, next, prev});

@@ -2,8 +2,8 @@
 // hand-checked meshes (a cube's corners, a flat grid, two faces of different areas, a hole, a
 // vertex without faces), orientation (winding and Options::leftHanded), TbbEvaluator bitwise equal
 // to CpuEvaluator on refined bench tori, the whole-level pass (face by face, chunks and seam
-// vertices) bitwise equal to the per-vertex one (ranges) and within 1e-6 of the corner-triple
-// form the Vulkan shaders sum, and the argument checks of both.
+// vertices) bitwise equal to the per-vertex one (ranges) and within 1e-6 of the faces' shoelace
+// sums in double, and the argument checks of both.
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
@@ -158,7 +158,8 @@ TEST(MeshNormals, HolesAndLonelyVerticesGiveNoNormal) {
     // Two quads side by side, the second a hole; vertex 6 belongs to no face.
     const std::vector<float> xyz = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 5, 5, 5};
     const MeshNormalTable t = tableOf({4, 4}, {0, 1, 4, 3, 1, 2, 5, 4}, 7, false, {1});
-    EXPECT_EQ(t.numTriples(), 4);  // one per corner of the drawn quad
+    EXPECT_EQ(t.numFaces(), 1);             // the drawn quad alone
+    EXPECT_EQ(t.vertexFaces.size(), 4u);  // once per corner
     const std::vector<float> n = normalsOf(t, xyz);
     for (int v : {0, 1, 3, 4}) expectNormal(n, v, 0, 0, 1, "drawn quad");
     for (int v : {2, 5, 6})
@@ -222,26 +223,36 @@ TEST(MeshNormals, TbbEqualsCpuBitwiseAndNormalsAreUnitAndOutward) {
     }
 }
 
-// The corner-triple form (MeshNormalTable::offsets, corners) in double: the sums the Vulkan
-// shaders make, each vertex's faces in another order and from another corner than the host's.
-std::vector<double> tripleNormals(const MeshNormalTable& t, const float* src, int stride) {
+// The same normals in double by another formula: each drawn face's doubled vector area as the
+// sum of p_k x p_(k+1) around it, added to each of its corners, face by face.
+std::vector<double> shoelaceNormals(const MeshNormalTable& t, const float* src, int stride) {
     std::vector<double> out(3 * std::size_t(t.numVertices), 0.0);
-    auto p = [&](int v, int c) { return double(src[std::size_t(v) * stride + c]); };
-    for (int v = 0; v < t.numVertices; ++v) {
-        double n[3] = {0, 0, 0};
-        for (int k = t.offsets[v]; k < t.offsets[v + 1]; ++k) {
-            const int* c = &t.corners[3 * std::size_t(k)];
-            const double x[3] = {p(c[1], 0) - p(v, 0), p(c[1], 1) - p(v, 1), p(c[1], 2) - p(v, 2)};
-            const double y[3] = {p(c[2], 0) - p(c[0], 0), p(c[2], 1) - p(c[0], 1), p(c[2], 2) - p(c[0], 2)};
-            n[0] += x[1] * y[2] - x[2] * y[1], n[1] += x[2] * y[0] - x[0] * y[2], n[2] += x[0] * y[1] - x[1] * y[0];
+    auto p = [&](int corner, int c) {
+        return double(src[std::size_t(corner & MeshNormalTable::kCornerIndexMask) * stride + c]);
+    };
+    for (int f = 0; f < t.numFaces(); ++f) {
+        const int first = t.faceOffsets[f], n = t.faceOffsets[f + 1] - first;
+        double a[3] = {0, 0, 0};
+        for (int k = 0; k < n; ++k) {
+            const int i = t.faceCorners[first + k], j = t.faceCorners[first + (k + 1) % n];
+            a[0] += p(i, 1) * p(j, 2) - p(i, 2) * p(j, 1);
+            a[1] += p(i, 2) * p(j, 0) - p(i, 0) * p(j, 2);
+            a[2] += p(i, 0) * p(j, 1) - p(i, 1) * p(j, 0);
         }
+        for (int k = 0; k < n; ++k) {
+            const int v = t.faceCorners[first + k] & MeshNormalTable::kCornerIndexMask;
+            for (int c = 0; c < 3; ++c) out[3 * std::size_t(v) + c] += a[c];
+        }
+    }
+    for (int v = 0; v < t.numVertices; ++v) {
+        double* n = &out[3 * std::size_t(v)];
         const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        for (int c = 0; c < 3; ++c) out[3 * std::size_t(v) + c] = len > 0 ? n[c] / len : 0.0;
+        for (int c = 0; c < 3; ++c) n[c] = len > 0 ? n[c] / len : 0.0;
     }
     return out;
 }
 
-TEST(MeshNormals, WholeLevelPassEqualsPerVertexPassAndTheTripleForm) {
+TEST(MeshNormals, WholeLevelPassEqualsPerVertexPassAndTheShoelaceSums) {
     for (bench::TorusFaces faces : {bench::TorusFaces::Quads, bench::TorusFaces::Triangles, bench::TorusFaces::Mixed}) {
         const Level L = refinedTorus(faces, Scheme::SchaeferWarren, 3);
         const MeshNormalTable& t = L.table;
@@ -271,13 +282,13 @@ TEST(MeshNormals, WholeLevelPassEqualsPerVertexPassAndTheTripleForm) {
             EXPECT_EQ(std::memcmp(whole.data(), perVertex.data(), floats * sizeof(float)), 0);
             EXPECT_EQ(std::memcmp(whole.data(), tbb.data(), floats * sizeof(float)), 0);
             const std::vector<double> reference =
-                tripleNormals(t, layout.src + layout.srcDesc.offset, layout.srcDesc.stride);
+                shoelaceNormals(t, layout.src + layout.srcDesc.offset, layout.srcDesc.stride);
             double worst = 0.0;
             for (int v = 0; v < n; ++v) {
                 const float* got = &whole[layout.dstDesc.offset + std::size_t(v) * layout.dstDesc.stride];
                 for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] - reference[3 * std::size_t(v) + c]));
             }
-            EXPECT_LT(worst, 1e-6) << "unit normals against the triple form in double";
+            EXPECT_LT(worst, 1e-6) << "unit normals against the shoelace sums in double";
         }
     }
 }

@@ -123,6 +123,46 @@ void compareLimit(VulkanContext& ctx, VulkanLimitEvaluator& eval, const LimitSte
                 [&](std::size_t f) { return scale[(f - std::size_t(d.offset)) / d.stride]; });
 }
 
+// The device's normals of vertices [start, end) against CpuEvaluator's (the whole level: its
+// face-by-face pass; a range: its per-vertex gather), through padded descriptors.
+void compareMeshNormals(VulkanContext& ctx, VulkanLimitEvaluator& eval, const MeshNormalTable& table,
+                        const std::vector<float>& xyz, int start, int end, const std::string& what) {
+    const BufferDescriptor src(1, 3, 4), dst(2, 3, 5);
+    const int n = table.numVertices;
+    std::vector<float> host(std::size_t(src.offset) + std::size_t(n) * src.stride, kUntouched);
+    for (int v = 0; v < n; ++v) std::copy_n(&xyz[3 * std::size_t(v)], 3, &host[src.offset + std::size_t(v) * src.stride]);
+    const std::size_t outFloats = std::size_t(dst.offset) + std::size_t(n) * dst.stride;
+    std::vector<float> cpu(outFloats, kUntouched);
+    CpuEvaluator::EvalMeshNormals(host.data(), src, cpu.data(), dst, table, start, end);
+    const VulkanMeshNormalTable gpuTable(ctx, table);
+    const VulkanVertexBuffer s = upload(ctx, host, src.stride);
+    const VulkanVertexBuffer d = upload(ctx, std::vector<float>(outFloats, kUntouched), dst.stride);
+    eval.EvalMeshNormalsAndWait(s, src, d, dst, gpuTable, start, end);
+    expectClose(download(d, outFloats), cpu, what);
+}
+
+TEST_F(VulkanTest, MeshNormalsMatchCpu) {
+    VulkanLimitEvaluator eval(*ctx);
+    for (bench::TorusFaces faces : {bench::TorusFaces::Quads, bench::TorusFaces::Triangles, bench::TorusFaces::Mixed}) {
+        const bench::ControlMesh m = bench::makeTorus(16, faces);
+        Refiner refiner(m.descriptor(), Options());
+        refiner.refineUniform(3);
+        const std::vector<float> xyz = evaluateLevels(refiner, m.positions, 3)[3];
+        const MeshNormalTable table = buildMeshNormalTable(refiner.faces(3));
+        compareMeshNormals(*ctx, eval, table, xyz, 0, -1, "mesh normals of " + m.name);
+        compareMeshNormals(*ctx, eval, table, xyz, 10, table.numVertices - 10, "mesh normals of " + m.name + ", a range");
+    }
+    // Faces of 5 and 6 corners (a fan of quads closed by a triangle, and one without): a roof of a
+    // pentagon and a hexagon over a bent strip, no two faces coplanar.
+    const std::vector<int> sizes = {5, 6, 3, 4};
+    const std::vector<int> verts = {0, 1, 2, 3, 4, 1, 5, 6, 7, 8, 2, 2, 8, 9, 3, 2, 9, 10};
+    const std::vector<float> xyz = {0, 0, 0,  1, 0, 0.1f,  1.2f, 1, 0.3f,  0.5f, 1.6f, 0.2f,  -0.3f, 0.9f, 0.1f,
+                                    2, -0.2f, 0.4f,  2.8f, 0.3f, 0.9f,  2.9f, 1.2f, 1.1f,  2.1f, 1.7f, 0.6f,
+                                    1.4f, 2.3f, 0.8f,  0.9f, 1.5f, 1.4f};
+    const Refiner polygons(descriptorOf(11, sizes, verts), Options());
+    compareMeshNormals(*ctx, eval, buildMeshNormalTable(polygons.faces(0)), xyz, 0, -1, "mesh normals of polygons");
+}
+
 TEST_F(VulkanTest, LimitStencilsMatchCpu) {
     VulkanLimitEvaluator eval(*ctx);
     const LimitStencilTable table = randomLimitTable(5000, 700, 29);
