@@ -62,9 +62,10 @@ void ImGuiLayer::shutdown() noexcept {
     if (ImGui::GetCurrentContext()) ImGui::DestroyContext();
 }
 
-void ImGuiLayer::newFrame() {
+void ImGuiLayer::newFrame(float deltaSeconds) {
     ImGui_ImplVulkan_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
+    ImGui_ImplGlfw_NewFrame();  // sets DeltaTime from glfwGetTime
+    if (deltaSeconds > 0.0f) ImGui::GetIO().DeltaTime = deltaSeconds;
     ImGui::NewFrame();
 }
 

@@ -18,7 +18,9 @@ public:
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-    void newFrame();
+    // `deltaSeconds` > 0 replaces the back end's clock for this frame (a script's fixed frame
+    // time, so that Dear ImGui's fades do not depend on the machine's speed).
+    void newFrame(float deltaSeconds = 0.0f);
     // Ends the frame's UI; draws it into `cmd` inside the render pass when `draw`.
     void render(VkCommandBuffer cmd, bool draw);
     // Whether the UI has the mouse / the keyboard (the view then ignores them).

@@ -17,6 +17,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr std::array<float, 4> kBackground{0.13f, 0.14f, 0.16f, 1.0f};
 
+// A script's frames are this far apart, whatever they take to draw: its animation and Dear
+// ImGui's fades (the modal prompt's veil) then look the same on every machine.
+constexpr double kScriptFrameSeconds = 1.0 / 60.0;
+
 double seconds() { return std::chrono::duration<double>(Clock::now().time_since_epoch()).count(); }
 
 Viewer& viewerOf(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
@@ -231,7 +235,8 @@ void Viewer::frame(render::Image* screenshot, bool withPanel) {
     glfwPollEvents();
     rebuild();
     handleInput();
-    const double now = seconds();
+    const bool scripted = !args_.script.empty();
+    const double now = scripted ? lastFrameTime_ + kScriptFrameSeconds : seconds();
     if (deform_) motionSeconds_ += (now - lastFrameTime_) * double(speed_);
     lastFrameTime_ = now;
     const bool curvature = view_.shading == render::Shading::MeanCurvature;
@@ -251,7 +256,7 @@ void Viewer::frame(render::Image* screenshot, bool withPanel) {
         glfwWaitEventsTimeout(0.05);  // minimized or resized: try again
         return;
     }
-    ui_->newFrame();
+    ui_->newFrame(scripted ? float(kScriptFrameSeconds) : 0.0f);
     drawPanel();
     VkCommandBuffer cmd = swapchain_->commandBuffer();
     // The evaluators' writes (earlier submissions) before the vertex shaders read them.
