@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "far/internal/regular_patches.h"
 #include "far/internal/scatter_row.h"
 #include "far/internal/stencil_table_double.h"
 #include "far/internal/weight_pool.h"
@@ -98,9 +99,11 @@ void reserveFor(V& v, std::size_t needed, std::size_t limit) {
 }
 
 // Composes every stencil of outer ∘ inner into parts and hands each part, in stencil order, to
-// append(part). Throws std::length_error once the entries composed pass maxEntries.
+// append(part); those `known` has (if not null) are copied from it. Throws std::length_error
+// once the entries composed pass maxEntries.
 template <class Weight, class Outer, class Append>
-void composeParts(const Outer& outer, const StencilTableD& inner, std::size_t maxEntries, Append append) {
+void composeParts(const Outer& outer, const StencilTableD& inner, std::size_t maxEntries, const KnownStencils* known,
+                  Append append) {
     const int n = outer.numStencils();
     const int numParts = (n + kPartStencils - 1) / kPartStencils;
     const int wave = std::max(1, std::min(numParts, kPartsPerThread * tbb::this_task_arena::max_concurrency()));
@@ -117,13 +120,21 @@ void composeParts(const Outer& outer, const StencilTableD& inner, std::size_t ma
             ScatterRow& row = rows.local();
             const int begin = (first + p) * kPartStencils, end = std::min(n, begin + kPartStencils);
             for (int i = begin; i < end; ++i) {
-                composeOne(outer, inner, i, row);
-                const int size = row.size();
+                const bool copied = known && known->has(i);
+                if (!copied) composeOne(outer, inner, i, row);
+                const int size = copied ? known->size(i) : row.size();
                 if (entries.fetch_add(std::size_t(size)) + std::size_t(size) > maxEntries) {
                     row.clear();
                     throw std::length_error("stencil table over its memory budget");
                 }
                 part.sizes.push_back(size);
+                if (copied) {
+                    const std::size_t at = part.indices.size();
+                    part.indices.resize(at + std::size_t(size));
+                    part.weights.resize(at + std::size_t(size));
+                    known->write(i, part.indices.data() + at, part.weights.data() + at);
+                    continue;
+                }
                 part.indices.insert(part.indices.end(), row.indices(), row.indices() + size);
                 part.weights.insert(part.weights.end(), row.weights(), row.weights() + size);
                 row.clear();
@@ -134,7 +145,8 @@ void composeParts(const Outer& outer, const StencilTableD& inner, std::size_t ma
 }
 
 template <class Outer>
-StencilTableD composeDouble(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes) {
+StencilTableD composeDouble(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes,
+                            const KnownStencils* known) {
     StencilTableD result;
     result.numSourceVertices = inner.numSourceVertices;
     const int n = outer.numStencils();
@@ -144,7 +156,7 @@ StencilTableD composeDouble(const Outer& outer, const StencilTableD& inner, std:
     const std::size_t expected = expectedEntries(n, inner, maxEntries);
     result.indices.reserve(expected);
     result.weights.reserve(expected);
-    composeParts<double>(outer, inner, maxEntries, [&](const Part<double>& part) {
+    composeParts<double>(outer, inner, maxEntries, known, [&](const Part<double>& part) {
         const std::size_t needed = result.indices.size() + part.indices.size();
         reserveFor(result.indices, needed, maxEntries);
         reserveFor(result.weights, needed, maxEntries);
@@ -159,7 +171,7 @@ StencilTableD composeDouble(const Outer& outer, const StencilTableD& inner, std:
 }
 
 template <class Outer>
-StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes) {
+StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes, const KnownStencils* known) {
     StencilTable result;
     result.numSourceVertices = inner.numSourceVertices;
     const int n = outer.numStencils();
@@ -168,13 +180,28 @@ StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::s
     result.weightOffsets.reserve(n);
     result.indices.reserve(expectedEntries(n, inner, maxEntries));
     WeightPool pool;
-    composeParts<float>(outer, inner, maxEntries, [&](const Part<float>& part) {
+    // A known stencil's weights are its template's: interned once per template, not per stencil.
+    std::vector<int> pooled[2];
+    if (known) {
+        std::vector<float> rounded;
+        for (int kind = 0; kind < 2; ++kind)
+            for (int p = 0; p < known->numTemplates[kind]; ++p) {
+                const int begin = known->offsets[kind][p], end = known->offsets[kind][p + 1];
+                rounded.assign(known->weights[kind] + begin, known->weights[kind] + end);
+                pooled[kind].push_back(pool.intern(rounded.data(), end - begin));
+            }
+    }
+    int i = 0;  // the stencil appended next
+    composeParts<float>(outer, inner, maxEntries, known, [&](const Part<float>& part) {
         reserveFor(result.indices, result.indices.size() + part.indices.size(), maxEntries);
         const float* weights = part.weights.data();
         for (int size : part.sizes) {
             result.offsets.push_back(result.offsets.back() + size);
-            result.weightOffsets.push_back(pool.intern(weights, size));
+            const bool copied = known && known->has(i);
+            result.weightOffsets.push_back(copied ? pooled[known->kind(i)][std::size_t(known->position[i])]
+                                                  : pool.intern(weights, size));
             weights += size;
+            ++i;
         }
         result.indices.insert(result.indices.end(), part.indices.begin(), part.indices.end());
     });
@@ -184,20 +211,24 @@ StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::s
 
 }  // namespace
 
-StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes) {
-    return composeDouble(DoubleOuter{outer}, inner, maxBytes);
+StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes,
+    const KnownStencils* known) {
+    return composeDouble(DoubleOuter{outer}, inner, maxBytes, known);
 }
 
-StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& inner, std::size_t maxBytes) {
-    return composeDouble(FloatOuter{outer}, inner, maxBytes);
+StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& inner, std::size_t maxBytes,
+    const KnownStencils* known) {
+    return composeDouble(FloatOuter{outer}, inner, maxBytes, known);
 }
 
-StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes) {
-    return composeFloat(DoubleOuter{outer}, inner, maxBytes);
+StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes,
+    const KnownStencils* known) {
+    return composeFloat(DoubleOuter{outer}, inner, maxBytes, known);
 }
 
-StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner, std::size_t maxBytes) {
-    return composeFloat(FloatOuter{outer}, inner, maxBytes);
+StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner, std::size_t maxBytes,
+    const KnownStencils* known) {
+    return composeFloat(FloatOuter{outer}, inner, maxBytes, known);
 }
 
 }  // namespace v0

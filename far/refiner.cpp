@@ -12,6 +12,7 @@
 #include "far/internal/limit_ring.h"
 #include "far/internal/limit_table.h"
 #include "far/internal/refine_topology.h"
+#include "far/internal/regular_patches.h"
 #include "far/internal/rules.h"
 #include "far/internal/scheme.h"
 #include "far/internal/stencil_table_double.h"
@@ -126,6 +127,10 @@ private:
 // refuses does not depend on which way the table is read.
 struct PositionLevels {
     const Refiner& refiner;
+    // The children of regular control faces are written from templates (regular_patches.h).
+    std::unique_ptr<RegularPatches> patches(int L) const {
+        return L >= 2 ? std::make_unique<RegularPatches>(refiner, L) : nullptr;
+    }
     StencilTableD table(int l) const { return toDoubleTable(refiner.levelStencils(l)); }
     const StencilTable& outer(int l) const { return refiner.levelStencils(l); }
     std::size_t bytes(int l) const { return doubleBytes(refiner.levelStencils(l)); }
@@ -133,6 +138,7 @@ struct PositionLevels {
 
 struct ChannelLevels {
     const FVarChannelRefinement& channel;
+    std::unique_ptr<RegularPatches> patches(int) const { return nullptr; }
     StencilTableD table(int l) const { return toDoubleTable(channel.levelStencils(l)); }
     const StencilTable& outer(int l) const { return channel.levelStencils(l); }
     std::size_t bytes(int l) const { return doubleBytes(channel.levelStencils(l)); }
@@ -141,6 +147,7 @@ struct ChannelLevels {
 // Varying tables (a level below maxLevel() always has full topology).
 struct VaryingLevels {
     const Refiner& refiner;
+    std::unique_ptr<RegularPatches> patches(int) const { return nullptr; }
     ChildNumbering numbering(int l) const {
         const Topology& parent = refiner.level(l - 1);
         return numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit());
@@ -150,16 +157,29 @@ struct VaryingLevels {
     std::size_t bytes(int l) const { return varyingStencilBytes(refiner.level(l - 1), numbering(l)); }
 };
 
-// Tables of levels 1..L composed in double, over the control vertices.
+// What `patches` knows of the next level (null without patches), its bytes reserved in `budget`
+// in place of the last level's.
+const KnownStencils* descend(RegularPatches* patches, CompositionBudget& budget) {
+    if (!patches) return nullptr;
+    budget.release(patches->bytes());
+    const KnownStencils& known = patches->descend();
+    budget.reserve(patches->bytes());
+    return &known;
+}
+
+// Tables of levels 1..L composed in double, over the control vertices; `patches` (if not null,
+// made for at least L levels) gives the stencils it knows.
 template <class Levels>
-StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels& levels) {
+StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels& levels, RegularPatches* patches) {
     budget.reserve(levels.bytes(1));
     StencilTableD composed = levels.table(1);
+    descend(patches, budget);  // level 1 is its own table
     for (int l = 2; l <= L; ++l) {
         budget.reserve(levels.bytes(l));
         const auto& outer = levels.outer(l);  // a reference, or a table kept for this step
         try {
-            StencilTableD next = composeStencils(outer, composed, budget.left());
+            const KnownStencils* known = descend(patches, budget);
+            StencilTableD next = composeStencils(outer, composed, budget.left(), known);
             budget.release(levels.bytes(l) + bytesOf(composed));
             budget.reserve(bytesOf(next));
             composed = std::move(next);
@@ -168,6 +188,13 @@ StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels&
         }
     }
     return composed;
+}
+
+template <class Levels>
+StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels& levels) {
+    const std::unique_ptr<RegularPatches> patches = levels.patches(L);
+    if (patches) budget.reserve(patches->bytes());
+    return composeLevelTables(L, budget, levels, patches.get());
 }
 
 // Bytes of a float table of n stencils and `entries` entries (an index per entry, two ints per
@@ -190,11 +217,14 @@ StencilTable toFloatWithin(const StencilTableD& composed, CompositionBudget& bud
 template <class Levels>
 StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const Levels& levels) {
     if (L == 1) return toFloatWithin(composeLevelTables(1, budget, levels), budget);
-    const StencilTableD inner = composeLevelTables(L - 1, budget, levels);
+    const std::unique_ptr<RegularPatches> patches = levels.patches(L);
+    if (patches) budget.reserve(patches->bytes());
+    const StencilTableD inner = composeLevelTables(L - 1, budget, levels, patches.get());
     budget.reserve(levels.bytes(L));
     StencilTable composed;
     try {
-        composed = composeStencilsToFloat(levels.outer(L), inner, budget.left());
+        const KnownStencils* known = descend(patches.get(), budget);
+        composed = composeStencilsToFloat(levels.outer(L), inner, budget.left(), known);
     } catch (const std::length_error&) {
         throw budget.refuse(budget.budget() + 1);
     }

@@ -28,21 +28,26 @@ StencilTableD toDoubleTable(const StencilTable& table);
 // Bytes of a table's arrays.
 std::size_t bytesOf(const StencilTableD& table);
 
+struct KnownStencils;  // far/internal/regular_patches.h
+
 // outer ∘ inner: stencils of `outer` (over inner's stencils) expanded over inner's sources.
 // Throws std::length_error before the result's arrays would pass `maxBytes` (or 2^31 - 1
 // entries, the reach of its int offsets); the caller names what was refused.
 // An outer float table composes as its toDoubleTable() would, bitwise, without that copy.
+// Stencils that `known` has are written as it says instead of composed (their sources and
+// weights agree with the composition's within rounding, not bitwise, and may come in another
+// order).
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner,
-                              std::size_t maxBytes = ~std::size_t(0));
+                              std::size_t maxBytes = ~std::size_t(0), const KnownStencils* known = nullptr);
 StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& inner,
-                              std::size_t maxBytes = ~std::size_t(0));
+                              std::size_t maxBytes = ~std::size_t(0), const KnownStencils* known = nullptr);
 
 // The same composition stored as float: bitwise toFloatTable(composeStencils(outer, inner,
-// maxBytes)), refused at the same point, without the double result (far/compose_stencils.cpp).
+// maxBytes, known)), refused at the same point, without the double result (far/compose_stencils.cpp).
 StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner,
-                                    std::size_t maxBytes = ~std::size_t(0));
+                                    std::size_t maxBytes = ~std::size_t(0), const KnownStencils* known = nullptr);
 StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner,
-                                    std::size_t maxBytes = ~std::size_t(0));
+                                    std::size_t maxBytes = ~std::size_t(0), const KnownStencils* known = nullptr);
 
 }  // namespace v0
 }  // namespace quadtri
