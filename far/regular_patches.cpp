@@ -227,7 +227,6 @@ void RegularPatches::findRegularFaces() {
         regular_.push_back(f);
         kinds_.push_back(std::uint8_t(kind));
     }
-    numRegular_ = int(regular_.size());
     cells_ = regular_;  // level 0's cells: the faces themselves
     known_.patchStart = patchStart_.data();
     known_.patchVerts = patchVerts_.data();

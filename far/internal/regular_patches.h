@@ -60,7 +60,7 @@ public:
     // its stencils are known; valid until the next call.
     const KnownStencils& descend();
 
-    int numRegularFaces() const { return numRegular_; }
+    int numRegularFaces() const { return int(regular_.size()); }
     // Bytes held now: the patches, templates and the current level's arrays.
     std::size_t bytes() const;
 
@@ -75,7 +75,7 @@ private:
     void buildTemplates(int kind);
 
     const Refiner& refiner_;
-    int maxLevel_, level_ = 0, numRegular_ = 0;
+    int maxLevel_, level_ = 0;
     std::vector<int> patchStart_, patchVerts_;
     std::vector<std::uint8_t> faceKind_;
     std::vector<int> regular_;  // the regular control faces
