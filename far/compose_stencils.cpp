@@ -4,9 +4,11 @@
 // composition of a factorized table can go straight to the stored float table.
 //
 // Stencils are composed in waves of parts on oneTBB's threads, each part a run of consecutive
-// stencils into buffers reused from wave to wave; the parts are then appended in stencil order,
-// on one thread, which also interns the float weights: the table is the same on any number of
-// threads.
+// stencils into buffers reused from wave to wave; the parts are then placed in stencil order, on
+// one thread, which also interns the float weights, and written into the result on the threads:
+// the table is the same on any number of threads. Stencils that templates give
+// (far/internal/regular_patches.h) are written straight into the result, and read from their
+// templates by the composition above them.
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -16,6 +18,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "far/internal/fresh_pages.h"
 #include "far/internal/regular_patches.h"
 #include "far/internal/scatter_row.h"
 #include "far/internal/stencil_table_double.h"
@@ -58,129 +61,223 @@ std::size_t entryLimit(int n, std::size_t maxBytes) {
     return std::min<std::size_t>((maxBytes - perStencil) / kEntryBytes, (1u << 31) - 1);
 }
 
-// Entries to reserve for the result: the inner table's entries per stencil, a quarter more (a
-// composed stencil grows by a tenth to a quarter a level once past the first levels), within
-// `limit`. Past it the arrays grow by half.
-std::size_t expectedEntries(int n, const StencilTableD& inner, std::size_t limit) {
-    const double perStencil = inner.sizes.empty() ? 0.0 : double(inner.indices.size()) / double(inner.sizes.size());
-    return std::min<std::size_t>(limit, std::size_t(1.25 * perStencil * n) + 16);
+// Entries to reserve for the result: the templated stencils' own sizes (none where they are
+// left out), and for each of the others the inner table's entries per stored stencil and a
+// quarter more (a composed stencil grows by a tenth to a quarter a level once past the first
+// levels), within `limit`. Past it the arrays grow by half.
+std::size_t expectedEntries(int n, const StencilTableD& inner, const TemplatedStencils& templated, std::size_t limit) {
+    std::size_t stored = inner.sizes.size();
+    if (templated.inner)
+        for (std::size_t j = 0; j < inner.sizes.size(); ++j) stored -= templated.inner->has(int(j)) ? 1 : 0;
+    const double perStencil = stored == 0 ? 0.0 : double(inner.indices.size()) / double(stored);
+    std::size_t knownEntries = 0;
+    int composed = n;
+    if (const KnownStencils* known = templated.result)
+        for (int i = 0; i < n; ++i)
+            if (known->has(i)) {
+                if (!templated.leaveOut) knownEntries += std::size_t(known->size(i));
+                --composed;
+            }
+    return std::min<std::size_t>(limit, knownEntries + std::size_t(1.25 * perStencil * composed) + 16);
 }
 
-// Stencil i of outer ∘ inner into `row`: each outer entry's inner stencil, scaled by its weight,
-// in entry order, so every sum is added up in the same order whatever the row's layout.
+// Stencil i of outer ∘ inner into `row`: each outer entry's inner stencil (from its template
+// where `innerKnown` has it), scaled by its weight, in entry order, so every sum is added up in
+// the same order whatever the row's layout. A templated inner stencil's entries come in the order
+// the table would have held them (KnownStencils::write).
 template <class Outer>
-void composeOne(const Outer& outer, const StencilTableD& inner, int i, ScatterRow& row) {
+void composeOne(const Outer& outer, const StencilTableD& inner, const KnownStencils* innerKnown, int i, ScatterRow& row) {
     const int begin = outer.begin(i), end = outer.end(i);
     const int* parents = outer.parents();
     const int *sizes = inner.sizes.data(), *offsets = inner.offsets.data();
+    auto templated = [&](int j) { return innerKnown && innerKnown->has(j); };
     int terms = 0;
-    for (int k = begin; k < end; ++k) terms += sizes[parents[k]];
+    for (int k = begin; k < end; ++k) {
+        const int j = parents[k];
+        terms += templated(j) ? innerKnown->size(j) : sizes[j];
+    }
     row.reserve(terms);
     for (int k = begin; k < end; ++k) {
         const int j = parents[k];
-        row.addScaled(inner.indices.data() + offsets[j], inner.weights.data() + offsets[j], sizes[j], outer.weight(i, k));
+        if (templated(j)) {
+            const KnownStencils::Entries t = innerKnown->entries(j);
+            row.addScaled(t.patch, t.corners, t.weights, t.size, outer.weight(i, k));
+        } else {
+            row.addScaled(inner.indices.data() + offsets[j], inner.weights.data() + offsets[j], sizes[j], outer.weight(i, k));
+        }
     }
 }
 
-// A run of composed stencils: their sizes, and their entries back to back, the weights as the
-// result stores them (double, or rounded to float).
+// A run of consecutive stencils: every stencil's size, and the entries of those composed (not
+// known) back to back, the weights as the result stores them (double, or rounded to float);
+// `at`, where the run's entries start in the result.
 template <class Weight>
 struct Part {
     std::vector<int> sizes;
     std::vector<int> indices;
     std::vector<Weight> weights;
+    std::size_t at = 0;
 };
 
 // Grows `v` to hold `needed` (half as much again), never past `limit` elements, so that a
-// refusal comes before the allocation that would pass the budget.
+// refusal comes before the allocation that would pass the budget; a large array is advised onto
+// huge pages before its first touch.
 template <class V>
 void reserveFor(V& v, std::size_t needed, std::size_t limit) {
-    if (needed > v.capacity()) v.reserve(std::min(limit, needed + needed / 2));
+    if (needed > v.capacity()) reserveFresh(v, std::min(limit, needed + needed / 2));
 }
 
-// Composes every stencil of outer ∘ inner into parts and hands each part, in stencil order, to
-// append(part); those `known` has (if not null) are copied from it. Throws std::length_error
-// once the entries composed pass maxEntries.
-template <class Weight, class Outer, class Append>
-void composeParts(const Outer& outer, const StencilTableD& inner, std::size_t maxEntries, const KnownStencils* known,
-                  Append append) {
+// Composes every stencil of outer ∘ inner into the result that `sink` keeps. Waves of parts are
+// composed on the threads; sink.append(part), on one thread and in stencil order, takes each
+// part's stencils, grows the result to hold their entries and returns where they start; then the
+// parts' entries are written there on the threads: a composed stencil's from its part, a
+// templated one's straight from its template, so that it is written once (or left out).
+// sink.indices() and sink.weights() point at the result's entries (weights null where the
+// result keeps none per entry). Throws std::length_error once the entries pass maxEntries.
+template <class Weight, class Outer, class Sink>
+void composeParts(const Outer& outer, const StencilTableD& inner, std::size_t maxEntries,
+                  const TemplatedStencils& templated, Sink& sink) {
     const int n = outer.numStencils();
     const int numParts = (n + kPartStencils - 1) / kPartStencils;
     const int wave = std::max(1, std::min(numParts, kPartsPerThread * tbb::this_task_arena::max_concurrency()));
     std::vector<Part<Weight>> parts(static_cast<std::size_t>(wave));
     tbb::enumerable_thread_specific<ScatterRow> rows([&] { return ScatterRow(inner.numSourceVertices); });
     std::atomic<std::size_t> entries{0};  // composed so far, over every part of every wave
+    const KnownStencils* known = templated.result;
+    auto isKnown = [&](int i) { return known && known->has(i); };
     for (int first = 0; first < numParts; first += wave) {
         const int count = std::min(wave, numParts - first);
+        auto range = [&](int p) { return std::make_pair((first + p) * kPartStencils, std::min(n, (first + p + 1) * kPartStencils)); };
         tbb::parallel_for(0, count, [&](int p) {
             Part<Weight>& part = parts[std::size_t(p)];
             part.sizes.clear();
             part.indices.clear();
             part.weights.clear();
             ScatterRow& row = rows.local();
-            const int begin = (first + p) * kPartStencils, end = std::min(n, begin + kPartStencils);
+            const auto [begin, end] = range(p);
             for (int i = begin; i < end; ++i) {
-                const bool copied = known && known->has(i);
-                if (!copied) composeOne(outer, inner, i, row);
-                const int size = copied ? known->size(i) : row.size();
+                const bool copied = isKnown(i);
+                if (!copied) composeOne(outer, inner, templated.inner, i, row);
+                const int size = copied ? (templated.leaveOut ? 0 : known->size(i)) : row.size();
                 if (entries.fetch_add(std::size_t(size)) + std::size_t(size) > maxEntries) {
                     row.clear();
                     throw std::length_error("stencil table over its memory budget");
                 }
                 part.sizes.push_back(size);
-                if (copied) {
-                    const std::size_t at = part.indices.size();
-                    part.indices.resize(at + std::size_t(size));
-                    part.weights.resize(at + std::size_t(size));
-                    known->write(i, part.indices.data() + at, part.weights.data() + at);
-                    continue;
-                }
+                if (copied) continue;
                 part.indices.insert(part.indices.end(), row.indices(), row.indices() + size);
                 part.weights.insert(part.weights.end(), row.weights(), row.weights() + size);
                 row.clear();
             }
         });
-        for (int p = 0; p < count; ++p) append(parts[std::size_t(p)]);
+        for (int p = 0; p < count; ++p) parts[std::size_t(p)].at = sink.append(parts[std::size_t(p)], range(p).first);
+        tbb::parallel_for(0, count, [&](int p) {
+            const Part<Weight>& part = parts[std::size_t(p)];
+            int* indices = sink.indices() + part.at;
+            Weight* weights = sink.weights() ? sink.weights() + part.at : nullptr;
+            const int* composedIndices = part.indices.data();
+            const Weight* composedWeights = part.weights.data();
+            const auto [begin, end] = range(p);
+            for (int i = begin; i < end; ++i) {
+                const int size = part.sizes[std::size_t(i - begin)];
+                if (isKnown(i)) {
+                    if (size > 0) known->write(i, indices, weights);
+                } else {
+                    std::copy_n(composedIndices, size, indices);
+                    composedIndices += size;
+                    if (weights) std::copy_n(composedWeights, size, weights);
+                    composedWeights += size;
+                }
+                indices += size;
+                if (weights) weights += size;
+            }
+        });
     }
 }
 
+// The double result: entries appended part by part.
+struct DoubleSink {
+    StencilTableD& result;
+    std::size_t maxEntries;
+    std::size_t append(const Part<double>& part, int) {
+        const std::size_t at = result.indices.size();
+        std::size_t size = 0;
+        for (int s : part.sizes) {
+            result.offsets.push_back(int(at + size));
+            result.sizes.push_back(s);
+            size += std::size_t(s);
+        }
+        reserveFor(result.indices, at + size, maxEntries);
+        reserveFor(result.weights, at + size, maxEntries);
+        result.indices.resize(at + size);
+        result.weights.resize(at + size);
+        return at;
+    }
+    int* indices() { return result.indices.data(); }
+    double* weights() { return result.weights.data(); }
+};
+
 template <class Outer>
 StencilTableD composeDouble(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes,
-                            const KnownStencils* known) {
+                            const TemplatedStencils& templated) {
     StencilTableD result;
     result.numSourceVertices = inner.numSourceVertices;
     const int n = outer.numStencils();
     const std::size_t maxEntries = entryLimit(n, maxBytes);
-    result.sizes.reserve(n);
-    result.offsets.reserve(n);
-    const std::size_t expected = expectedEntries(n, inner, maxEntries);
-    result.indices.reserve(expected);
-    result.weights.reserve(expected);
-    composeParts<double>(outer, inner, maxEntries, known, [&](const Part<double>& part) {
-        const std::size_t needed = result.indices.size() + part.indices.size();
-        reserveFor(result.indices, needed, maxEntries);
-        reserveFor(result.weights, needed, maxEntries);
-        for (int size : part.sizes) {
-            result.offsets.push_back(result.offsets.empty() ? 0 : result.offsets.back() + result.sizes.back());
-            result.sizes.push_back(size);
-        }
-        result.indices.insert(result.indices.end(), part.indices.begin(), part.indices.end());
-        result.weights.insert(result.weights.end(), part.weights.begin(), part.weights.end());
-    });
+    reserveFresh(result.sizes, std::size_t(n));
+    reserveFresh(result.offsets, std::size_t(n));
+    const std::size_t expected = expectedEntries(n, inner, templated, maxEntries);
+    reserveFresh(result.indices, expected);
+    reserveFresh(result.weights, expected);
+    DoubleSink sink{result, maxEntries};
+    composeParts<double>(outer, inner, maxEntries, templated, sink);
     return result;
 }
 
+// The float result: offsets and interned weights appended part by part (a known stencil's weights
+// are its template's, interned once per template), the indices after them.
+struct FloatSink {
+    StencilTable& result;
+    WeightPool& pool;
+    const KnownStencils* known;
+    const std::vector<int>* pooled;  // per kind: each template's weights in the pool
+    std::size_t maxEntries;
+    std::size_t append(const Part<float>& part, int first) {
+        const std::size_t at = result.indices.size();
+        const float* weights = part.weights.data();
+        int i = first;
+        for (int size : part.sizes) {
+            result.offsets.push_back(result.offsets.back() + size);
+            if (known && known->has(i)) {
+                result.weightOffsets.push_back(pooled[known->kind(i)][std::size_t(known->position[i])]);
+            } else {
+                result.weightOffsets.push_back(pool.intern(weights, size));
+                weights += size;
+            }
+            ++i;
+        }
+        const std::size_t end = std::size_t(result.offsets.back());
+        reserveFor(result.indices, end, maxEntries);
+        result.indices.resize(end);
+        return at;
+    }
+    int* indices() { return result.indices.data(); }
+    float* weights() { return nullptr; }
+};
+
 template <class Outer>
-StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes, const KnownStencils* known) {
+StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes,
+                          TemplatedStencils templated) {
+    templated.leaveOut = false;
+    const KnownStencils* known = templated.result;
     StencilTable result;
     result.numSourceVertices = inner.numSourceVertices;
     const int n = outer.numStencils();
     const std::size_t maxEntries = entryLimit(n, maxBytes);
-    result.offsets.reserve(std::size_t(n) + 1);
-    result.weightOffsets.reserve(n);
-    result.indices.reserve(expectedEntries(n, inner, maxEntries));
+    reserveFresh(result.offsets, std::size_t(n) + 1);
+    reserveFresh(result.weightOffsets, std::size_t(n));
+    reserveFresh(result.indices, expectedEntries(n, inner, templated, maxEntries));
     WeightPool pool;
-    // A known stencil's weights are its template's: interned once per template, not per stencil.
     std::vector<int> pooled[2];
     if (known) {
         std::vector<float> rounded;
@@ -191,20 +288,8 @@ StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::s
                 pooled[kind].push_back(pool.intern(rounded.data(), end - begin));
             }
     }
-    int i = 0;  // the stencil appended next
-    composeParts<float>(outer, inner, maxEntries, known, [&](const Part<float>& part) {
-        reserveFor(result.indices, result.indices.size() + part.indices.size(), maxEntries);
-        const float* weights = part.weights.data();
-        for (int size : part.sizes) {
-            result.offsets.push_back(result.offsets.back() + size);
-            const bool copied = known && known->has(i);
-            result.weightOffsets.push_back(copied ? pooled[known->kind(i)][std::size_t(known->position[i])]
-                                                  : pool.intern(weights, size));
-            weights += size;
-            ++i;
-        }
-        result.indices.insert(result.indices.end(), part.indices.begin(), part.indices.end());
-    });
+    FloatSink sink{result, pool, known, pooled, maxEntries};
+    composeParts<float>(outer, inner, maxEntries, templated, sink);
     result.weights = pool.take();
     return result;
 }
@@ -212,23 +297,23 @@ StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::s
 }  // namespace
 
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes,
-    const KnownStencils* known) {
-    return composeDouble(DoubleOuter{outer}, inner, maxBytes, known);
+                              const TemplatedStencils& templated) {
+    return composeDouble(DoubleOuter{outer}, inner, maxBytes, templated);
 }
 
 StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& inner, std::size_t maxBytes,
-    const KnownStencils* known) {
-    return composeDouble(FloatOuter{outer}, inner, maxBytes, known);
+                              const TemplatedStencils& templated) {
+    return composeDouble(FloatOuter{outer}, inner, maxBytes, templated);
 }
 
 StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes,
-    const KnownStencils* known) {
-    return composeFloat(DoubleOuter{outer}, inner, maxBytes, known);
+                                    const TemplatedStencils& templated) {
+    return composeFloat(DoubleOuter{outer}, inner, maxBytes, templated);
 }
 
 StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner, std::size_t maxBytes,
-    const KnownStencils* known) {
-    return composeFloat(FloatOuter{outer}, inner, maxBytes, known);
+                                    const TemplatedStencils& templated) {
+    return composeFloat(FloatOuter{outer}, inner, maxBytes, templated);
 }
 
 }  // namespace v0

@@ -168,25 +168,33 @@ const KnownStencils* descend(RegularPatches* patches, CompositionBudget& budget)
 }
 
 // Tables of levels 1..L composed in double, over the control vertices; `patches` (if not null,
-// made for at least L levels) gives the stencils it knows.
+// made for at least L levels) gives the stencils it knows. Those of levels 2..L-1 are left out of
+// their tables and read from their templates by the composition below them; with `leftOut`,
+// level L's too, and *leftOut is what the returned table then lacks (null where it lacks
+// nothing), valid until patches descends twice more.
 template <class Levels>
-StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels& levels, RegularPatches* patches) {
+StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels& levels, RegularPatches* patches,
+                                 const KnownStencils** leftOut = nullptr) {
     budget.reserve(levels.bytes(1));
     StencilTableD composed = levels.table(1);
     descend(patches, budget);  // level 1 is its own table
+    const KnownStencils* innerKnown = nullptr;  // left out of `composed`
     for (int l = 2; l <= L; ++l) {
         budget.reserve(levels.bytes(l));
         const auto& outer = levels.outer(l);  // a reference, or a table kept for this step
         try {
             const KnownStencils* known = descend(patches, budget);
-            StencilTableD next = composeStencils(outer, composed, budget.left(), known);
+            const bool leaveOut = known && (l < L || leftOut);
+            StencilTableD next = composeStencils(outer, composed, budget.left(), {known, innerKnown, leaveOut});
             budget.release(levels.bytes(l) + bytesOf(composed));
             budget.reserve(bytesOf(next));
             composed = std::move(next);
+            innerKnown = leaveOut ? known : nullptr;
         } catch (const std::length_error&) {
             throw budget.refuse(budget.budget() + 1);  // composition stopped at the budget: more, by how much is unknown
         }
     }
+    if (leftOut) *leftOut = innerKnown;
     return composed;
 }
 
@@ -219,12 +227,13 @@ StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const L
     if (L == 1) return toFloatWithin(composeLevelTables(1, budget, levels), budget);
     const std::unique_ptr<RegularPatches> patches = levels.patches(L);
     if (patches) budget.reserve(patches->bytes());
-    const StencilTableD inner = composeLevelTables(L - 1, budget, levels, patches.get());
+    const KnownStencils* innerKnown = nullptr;
+    const StencilTableD inner = composeLevelTables(L - 1, budget, levels, patches.get(), &innerKnown);
     budget.reserve(levels.bytes(L));
     StencilTable composed;
     try {
         const KnownStencils* known = descend(patches.get(), budget);
-        composed = composeStencilsToFloat(levels.outer(L), inner, budget.left(), known);
+        composed = composeStencilsToFloat(levels.outer(L), inner, budget.left(), {known, innerKnown});
     } catch (const std::length_error&) {
         throw budget.refuse(budget.budget() + 1);
     }

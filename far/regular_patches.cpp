@@ -228,35 +228,40 @@ void RegularPatches::findRegularFaces() {
         kinds_.push_back(std::uint8_t(kind));
     }
     cells_ = regular_;  // level 0's cells: the faces themselves
-    known_.patchStart = patchStart_.data();
-    known_.patchVerts = patchVerts_.data();
-    known_.faceKind = faceKind_.data();
 }
 
 const KnownStencils& RegularPatches::descend() {
     const int l = ++level_;
-    face_.assign(std::size_t(refiner_.levelStencils(l).numStencils()), -1);
-    position_.resize(face_.size());
+    std::vector<int>& face = face_[l % 2];
+    std::vector<int>& position = position_[l % 2];
+    KnownStencils& known = known_[l % 2];
+    face.assign(std::size_t(refiner_.levelStencils(l).numStencils()), -1);
+    position.resize(face.size());
     descendCells(refiner_, l - 1, cells_, kinds_, l < maxLevel_, [&](std::size_t r, int p, int v) {
-        face_[std::size_t(v)] = regular_[r];
-        position_[std::size_t(v)] = p;
+        face[std::size_t(v)] = regular_[r];
+        position[std::size_t(v)] = p;
     });
-    known_.face = face_.data();
-    known_.position = position_.data();
+    known.patchStart = patchStart_.data();
+    known.patchVerts = patchVerts_.data();
+    known.faceKind = faceKind_.data();
+    known.face = face.data();
+    known.position = position.data();
     for (int kind = 0; kind < 2; ++kind) {
         const Templates& t = templates_[kind];
         if (int(t.offsets.size()) != maxLevel_) continue;  // none, or given up part of the way
-        known_.offsets[kind] = t.offsets[std::size_t(l) - 1].data();
-        known_.corners[kind] = t.corners[std::size_t(l) - 1].data();
-        known_.weights[kind] = t.weights[std::size_t(l) - 1].data();
-        known_.numTemplates[kind] = numPositions(kind, l);
+        known.offsets[kind] = t.offsets[std::size_t(l) - 1].data();
+        known.corners[kind] = t.corners[std::size_t(l) - 1].data();
+        known.weights[kind] = t.weights[std::size_t(l) - 1].data();
+        known.numTemplates[kind] = numPositions(kind, l);
     }
-    return known_;
+    return known;
 }
 
 std::size_t RegularPatches::bytes() const {
     std::size_t b = (patchStart_.capacity() + patchVerts_.capacity() + cells_.capacity() + regular_.capacity() +
-                     face_.capacity() + position_.capacity()) * sizeof(int) + faceKind_.capacity() + kinds_.capacity();
+                     face_[0].capacity() + face_[1].capacity() + position_[0].capacity() + position_[1].capacity()) *
+                        sizeof(int) +
+                    faceKind_.capacity() + kinds_.capacity();
     for (const Templates& t : templates_)
         for (std::size_t l = 0; l < t.offsets.size(); ++l)
             b += t.offsets[l].capacity() * sizeof(int) + t.corners[l].capacity() + t.weights[l].capacity() * sizeof(double);

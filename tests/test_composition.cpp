@@ -236,10 +236,10 @@ TEST(Composition, RegularFacesAsTheReference) {
     desc.creaseVertexPairs = pair;
     desc.creaseWeights = &sharpness;
     Refiner refiner(desc, Options());
-    refiner.refineUniform(3);
-    const RegularPatches patches(refiner, 3);
+    refiner.refineUniform(4);  // levels 2 and 3 hold only the composed stencils, level 4 reads both kinds
+    const RegularPatches patches(refiner, 4);
     EXPECT_EQ(patches.numRegularFaces(), refiner.level(0).numFaces() - 20) << "a crease edge's two vertices are in 20 patches";
-    checkRefiner(refiner, 3, torus.name + " with a crease");
+    checkRefiner(refiner, 4, torus.name + " with a crease");
 }
 
 // Poles of valence 64: composed stencils near them pass a hundred sources.
@@ -251,24 +251,36 @@ TEST(Composition, HighValenceAsTheReference) {
     checkRefiner(refiner, 3, sphere.name);
 }
 
-// Many waves of parts (far/compose_stencils.cpp): one thread and four give the same tables.
+// Many waves of parts (far/compose_stencils.cpp): one thread and four give the same tables, on a
+// mixed torus (everything composed) and on a creased quad torus (templated stencils written
+// beside composed ones, the composed reading templated ones).
 TEST(Composition, SameTablesOnAnyNumberOfThreads) {
-    const bench::ControlMesh torus = bench::makeTorus(40, bench::TorusFaces::Mixed);
-    const TopologyDescriptor desc = torus.descriptor();
-    Options options;
-    options.scheme = Scheme::SchaeferWarren;
-    Refiner refiner(desc, options);
-    refiner.refineUniform(3);
-    StencilTable serial;
-    {
-        const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
-        serial = refiner.factorizedStencils(3);
+    for (const bench::TorusFaces faces : {bench::TorusFaces::Mixed, bench::TorusFaces::Quads}) {
+        const bench::ControlMesh torus = bench::makeTorus(40, faces);
+        TopologyDescriptor desc = torus.descriptor();
+        const int pair[2] = {0, 1};
+        const float sharpness = 2.0f;
+        Options options;
+        options.scheme = Scheme::SchaeferWarren;
+        if (faces == bench::TorusFaces::Quads) {
+            desc.numCreases = 1;
+            desc.creaseVertexPairs = pair;
+            desc.creaseWeights = &sharpness;
+            options.scheme = Scheme::CatmullClark;
+        }
+        Refiner refiner(desc, options);
+        refiner.refineUniform(3);
+        StencilTable serial;
+        {
+            const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+            serial = refiner.factorizedStencils(3);
+        }
+        StencilTable threaded;
+        tbb::task_arena(4).execute([&] { threaded = refiner.factorizedStencils(3); });
+        ASSERT_GT(serial.numStencils(), 4 * 4 * 2048) << "fewer stencils than a wave of parts";
+        expectSame(threaded, serial, torus.name + " level 3, 4 threads against 1");
+        checkRefiner(refiner, 3, torus.name);
     }
-    StencilTable threaded;
-    tbb::task_arena(4).execute([&] { threaded = refiner.factorizedStencils(3); });
-    ASSERT_GT(serial.numStencils(), 4 * 4 * 2048) << "fewer stencils than a wave of parts";
-    expectSame(threaded, serial, torus.name + " level 3, 4 threads against 1");
-    checkRefiner(refiner, 3, torus.name);
 }
 
 TEST(Composition, ChannelAndVaryingTablesAsTheReference) {

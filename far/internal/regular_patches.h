@@ -37,15 +37,27 @@ struct KnownStencils {
         const int k = faceKind[face[i]], p = position[i];
         return offsets[k][p + 1] - offsets[k][p];
     }
-    // Writes stencil i's entries, in its template's order.
+
+    // Stencil i as its template gives it: entry e reads patch[corners[e]] with weights[e].
+    struct Entries {
+        const int* patch;
+        const std::uint8_t* corners;
+        const double* weights;
+        int size;
+    };
+    Entries entries(int i) const {
+        const int f = face[i], k = faceKind[f], p = position[i], begin = offsets[k][p];
+        return {patchVerts + patchStart[f], corners[k] + begin, weights[k] + begin, offsets[k][p + 1] - begin};
+    }
+
+    // Writes stencil i's entries, in its template's order: its indices, and its weights where
+    // `out` is not null.
     template <class Weight>
     void write(int i, int* indices, Weight* out) const {
-        const int f = face[i], k = faceKind[f], p = position[i];
-        const int* patch = patchVerts + patchStart[f];
-        for (int e = offsets[k][p], end = offsets[k][p + 1]; e < end; ++e) {
-            *indices++ = patch[corners[k][e]];
-            *out++ = Weight(weights[k][e]);
-        }
+        const Entries t = entries(i);
+        for (int e = 0; e < t.size; ++e) *indices++ = t.patch[t.corners[e]];
+        if (out)
+            for (int e = 0; e < t.size; ++e) *out++ = Weight(t.weights[e]);
     }
 };
 
@@ -57,7 +69,8 @@ public:
     RegularPatches(const Refiner& refiner, int maxLevel);
 
     // Moves to the next level (level 1 on the first call, up to maxLevel) and returns which of
-    // its stencils are known; valid until the next call.
+    // its stencils are known; valid until the call after next, so that the level above can be
+    // composed over it.
     const KnownStencils& descend();
 
     int numRegularFaces() const { return int(regular_.size()); }
@@ -81,9 +94,10 @@ private:
     std::vector<int> regular_;  // the regular control faces
     std::vector<std::uint8_t> kinds_;  // and their kinds
     std::vector<int> cells_;  // per regular face, its 4^level cells (faces of the current level)
-    std::vector<int> face_, position_;
+    // The last two levels' KnownStencils and their per-stencil arrays, by the level's parity.
+    std::vector<int> face_[2], position_[2];
     Templates templates_[2];
-    KnownStencils known_;
+    KnownStencils known_[2];
 };
 
 }  // namespace v0

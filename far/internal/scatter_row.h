@@ -6,6 +6,7 @@
 // accumulator (sparse_accumulator.h).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 namespace quadtri {
@@ -25,26 +26,13 @@ public:
 
     // Adds scale * weights[m] to the sum of sources[m], m < n, in that order. A source seen
     // before gets its term added to its sum; a new one starts its sum at the term itself (not
-    // 0 + term, which would turn -0.0 into +0.0). Raw pointers in locals: the stores cannot
-    // alias the row's own members.
+    // 0 + term, which would turn -0.0 into +0.0).
     void addScaled(const int* sources, const double* weights, int n, double scale) {
-        int* slot = slot_.data();
-        int* indices = indices_.data();
-        double* sums = weights_.data();
-        int size = size_;
-        for (int m = 0; m < n; ++m) {
-            const int source = sources[m];
-            const double term = scale * weights[m];
-            const int at = slot[source];
-            if (at < 0) {
-                slot[source] = size;
-                indices[size] = source;
-                sums[size++] = term;
-            } else {
-                sums[at] += term;
-            }
-        }
-        size_ = size;
+        add([sources](int m) { return sources[m]; }, weights, n, scale);
+    }
+    // The same with source m at patch[corners[m]] (a templated stencil, regular_patches.h).
+    void addScaled(const int* patch, const std::uint8_t* corners, const double* weights, int n, double scale) {
+        add([patch, corners](int m) { return patch[corners[m]]; }, weights, n, scale);
     }
 
     int size() const { return size_; }
@@ -58,6 +46,28 @@ public:
     }
 
 private:
+    // Raw pointers in locals: the stores cannot alias the row's own members.
+    template <class Source>
+    void add(Source source, const double* weights, int n, double scale) {
+        int* slot = slot_.data();
+        int* indices = indices_.data();
+        double* sums = weights_.data();
+        int size = size_;
+        for (int m = 0; m < n; ++m) {
+            const int v = source(m);
+            const double term = scale * weights[m];
+            const int at = slot[v];
+            if (at < 0) {
+                slot[v] = size;
+                indices[size] = v;
+                sums[size++] = term;
+            } else {
+                sums[at] += term;
+            }
+        }
+        size_ = size;
+    }
+
     std::vector<int> slot_;  // per source: its entry in the stencil, -1 outside it
     std::vector<int> indices_;
     std::vector<double> weights_;

@@ -30,24 +30,37 @@ std::size_t bytesOf(const StencilTableD& table);
 
 struct KnownStencils;  // far/internal/regular_patches.h
 
+// Stencils of a composition that templates give (far/internal/regular_patches.h), rather than
+// composition or the inner table.
+struct TemplatedStencils {
+    // The result's: written from their templates instead of composed (their sources and weights
+    // agree with the composition's within rounding, not bitwise, and may come in another order).
+    const KnownStencils* result = nullptr;
+    // The inner table's: read from their templates, not from the table, which may hold them
+    // left out (below).
+    const KnownStencils* inner = nullptr;
+    // The result's templated stencils left out of its arrays (size 0, no entries), for the next
+    // composition, which names them as `inner`, to read from their templates. Double results
+    // only: nothing is left out of a float table.
+    bool leaveOut = false;
+};
+
 // outer ∘ inner: stencils of `outer` (over inner's stencils) expanded over inner's sources.
 // Throws std::length_error before the result's arrays would pass `maxBytes` (or 2^31 - 1
 // entries, the reach of its int offsets); the caller names what was refused.
 // An outer float table composes as its toDoubleTable() would, bitwise, without that copy.
-// Stencils that `known` has are written as it says instead of composed (their sources and
-// weights agree with the composition's within rounding, not bitwise, and may come in another
-// order).
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner,
-                              std::size_t maxBytes = ~std::size_t(0), const KnownStencils* known = nullptr);
+                              std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& inner,
-                              std::size_t maxBytes = ~std::size_t(0), const KnownStencils* known = nullptr);
+                              std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 
 // The same composition stored as float: bitwise toFloatTable(composeStencils(outer, inner,
-// maxBytes, known)), refused at the same point, without the double result (far/compose_stencils.cpp).
+// maxBytes, templated)) with nothing left out, refused at the same point, without the double
+// result (far/compose_stencils.cpp).
 StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner,
-                                    std::size_t maxBytes = ~std::size_t(0), const KnownStencils* known = nullptr);
+                                    std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner,
-                                    std::size_t maxBytes = ~std::size_t(0), const KnownStencils* known = nullptr);
+                                    std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 
 }  // namespace v0
 }  // namespace quadtri
