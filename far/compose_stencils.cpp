@@ -8,7 +8,7 @@
 // one thread, which also interns the float weights, and written into the result on the threads:
 // the table is the same on any number of threads. Stencils that templates give
 // (far/internal/regular_patches.h) are written straight into the result, and read from their
-// templates by the composition above them.
+// templates by the composition of the level below.
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
