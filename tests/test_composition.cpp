@@ -229,13 +229,7 @@ TEST(Composition, RegularFacesAsTheReference) {
         }
     // A crease through a quad torus: the faces whose patches hold one of its vertices are composed.
     const bench::ControlMesh torus = bench::makeTorus(14, bench::TorusFaces::Quads);
-    TopologyDescriptor desc = torus.descriptor();
-    const int pair[2] = {0, 1};
-    const float sharpness = 2.0f;
-    desc.numCreases = 1;
-    desc.creaseVertexPairs = pair;
-    desc.creaseWeights = &sharpness;
-    Refiner refiner(desc, Options());
+    Refiner refiner(withOneCrease(torus.descriptor()), Options());
     refiner.refineUniform(4);  // levels 2 and 3 hold only the composed stencils, level 4 reads both kinds
     const RegularPatches patches(refiner, 4);
     EXPECT_EQ(patches.numRegularFaces(), refiner.level(0).numFaces() - 20) << "a crease edge's two vertices are in 20 patches";
@@ -257,17 +251,10 @@ TEST(Composition, HighValenceAsTheReference) {
 TEST(Composition, SameTablesOnAnyNumberOfThreads) {
     for (const bench::TorusFaces faces : {bench::TorusFaces::Mixed, bench::TorusFaces::Quads}) {
         const bench::ControlMesh torus = bench::makeTorus(40, faces);
-        TopologyDescriptor desc = torus.descriptor();
-        const int pair[2] = {0, 1};
-        const float sharpness = 2.0f;
+        const bool quads = faces == bench::TorusFaces::Quads;
+        const TopologyDescriptor desc = quads ? withOneCrease(torus.descriptor()) : torus.descriptor();
         Options options;
-        options.scheme = Scheme::SchaeferWarren;
-        if (faces == bench::TorusFaces::Quads) {
-            desc.numCreases = 1;
-            desc.creaseVertexPairs = pair;
-            desc.creaseWeights = &sharpness;
-            options.scheme = Scheme::CatmullClark;
-        }
+        options.scheme = quads ? Scheme::CatmullClark : Scheme::SchaeferWarren;
         Refiner refiner(desc, options);
         refiner.refineUniform(3);
         StencilTable serial;

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/torus.h"
 #include "tests/limit_support.h"
 #include "tests/test_support.h"
 
@@ -268,8 +269,24 @@ TEST(LimitStencils, FacesOnlyLevelGivesTheSameTable) {
     }
 }
 
-// factorizedLimitStencils(L) on the control vertices lands where limitStencils(L) on level L's
-// refined vertices does.
+// factorizedLimitStencils(L) on `control` lands where limitStencils(L) on level L's refined
+// vertices (`level`) does.
+void expectFactorizedAsPerLevel(const Refiner& refiner, const std::vector<float>& control, const std::vector<float>& level,
+                                int L, const std::string& where) {
+    const double diagonal = boundingBoxDiagonal(control);
+    const int maxLevel = refiner.maxLevel();
+    const LimitStencilTable factorized = refiner.factorizedLimitStencils(L);
+    EXPECT_EQ(factorized.numSourceVertices, int(control.size() / 3)) << where;
+    const LimitData a = applyLimit(factorized, control);
+    const LimitData b = applyLimit(refiner.limitStencils(L), level);
+    ASSERT_EQ(a.position.size(), b.position.size()) << where;
+    for (std::size_t v = 0; v < a.position.size(); ++v) {
+        EXPECT_LE(distance(a.position[v], b.position[v]), 1e-6 * diagonal) << where << " level " << L;
+        EXPECT_LE(distance(a.du[v], b.du[v]), 1e-6 * diagonal * (1 << (maxLevel - L)) + 1e-5 * norm(b.du[v])) << where;
+        EXPECT_LE(distance(a.dv[v], b.dv[v]), 1e-6 * diagonal * (1 << (maxLevel - L)) + 1e-5 * norm(b.dv[v])) << where;
+    }
+}
+
 TEST(LimitStencils, FactorizedEqualsPerLevel) {
     for (const auto& [mesh, scheme] : {std::pair{"osd/catmark_torus_creases0.obj", Scheme::CatmullClark},
                                        std::pair{"osd/loop_icos_infsharp.obj", Scheme::Loop},
@@ -277,19 +294,23 @@ TEST(LimitStencils, FactorizedEqualsPerLevel) {
         Options options;
         options.scheme = scheme;
         const RefinedMesh r = refineMesh(mesh, 3, options);
-        const double diagonal = boundingBoxDiagonal(r.mesh.positions);
-        for (int L = 0; L <= 3; ++L) {
-            const LimitStencilTable factorized = r.refiner->factorizedLimitStencils(L);
-            EXPECT_EQ(factorized.numSourceVertices, r.mesh.numVertices());
-            const LimitData a = applyLimit(factorized, r.mesh.positions);
-            const LimitData b = applyLimit(r.refiner->limitStencils(L), r.positions[L]);
-            ASSERT_EQ(a.position.size(), b.position.size());
-            for (std::size_t v = 0; v < a.position.size(); ++v) {
-                EXPECT_LE(distance(a.position[v], b.position[v]), 1e-6 * diagonal) << mesh << " level " << L;
-                EXPECT_LE(distance(a.du[v], b.du[v]), 1e-6 * diagonal * (1 << (3 - L)) + 1e-5 * norm(b.du[v]));
-                EXPECT_LE(distance(a.dv[v], b.dv[v]), 1e-6 * diagonal * (1 << (3 - L)) + 1e-5 * norm(b.dv[v]));
-            }
-        }
+        for (int L = 0; L <= 3; ++L) expectFactorizedAsPerLevel(*r.refiner, r.mesh.positions, r.positions[L], L, mesh);
+    }
+}
+
+// The same on tori big enough for the factorized tables' templates (docs/factorized_templates.md):
+// the level chain below the limit table leaves the templated stencils out of its intermediate
+// levels and keeps its last level whole. A crease keeps some faces composed beside them.
+TEST(LimitStencils, FactorizedEqualsPerLevelWithTemplates) {
+    for (const bench::TorusFaces faces : {bench::TorusFaces::Quads, bench::TorusFaces::Triangles}) {
+        const bench::ControlMesh torus = bench::makeTorus(14, faces);
+        const TopologyDescriptor desc = withOneCrease(torus.descriptor());
+        Options options;
+        options.scheme = faces == bench::TorusFaces::Quads ? Scheme::CatmullClark : Scheme::Loop;
+        Refiner refiner(desc, options);
+        refiner.refineUniform(3);
+        const std::vector<std::vector<float>> levels = evaluateLevels(refiner, torus.positions, 3);
+        for (int L = 1; L <= 3; ++L) expectFactorizedAsPerLevel(refiner, torus.positions, levels[std::size_t(L)], L, torus.name);
     }
 }
 

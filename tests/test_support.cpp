@@ -114,6 +114,15 @@ TopologyDescriptor descriptorOf(int numVertices, const std::vector<int>& sizes, 
     return d;
 }
 
+TopologyDescriptor withOneCrease(TopologyDescriptor desc) {
+    static const int pair[2] = {0, 1};
+    static const float sharpness = 2.0f;
+    desc.numCreases = 1;
+    desc.creaseVertexPairs = pair;
+    desc.creaseWeights = &sharpness;
+    return desc;
+}
+
 void expectShortCutEqualsTheRules(const std::string& mesh, const Options& options) {
     const io::ObjMesh m = io::readObj(meshPath(mesh));
     Refiner refiner(m.descriptor(), m.applyTags(options));

@@ -44,6 +44,8 @@ std::string testNameOf(std::string text);
 // A descriptor over faces of the given sizes and corners (no tags); valid while `sizes` and
 // `verts` live.
 TopologyDescriptor descriptorOf(int numVertices, const std::vector<int>& sizes, const std::vector<int>& verts);
+// `desc` with one crease of sharpness 2 along the edge from vertex 0 to vertex 1 (and no other).
+TopologyDescriptor withOneCrease(TopologyDescriptor desc);
 
 // Three stencils over four sources: 0.5 s0 + 0.5 s1, s3, 0.25 (s0 + s1 + s2 + s3).
 StencilTable handCheckedTable();
