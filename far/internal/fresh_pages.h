@@ -1,32 +1,52 @@
 // Large arrays that a level build allocates and then fills: their first touch, one page fault
 // per 4 KiB page, was about half the build's time (docs/architecture.md, "First touch of fresh
-// pages"). Reserved through reserveFresh, an array of several MiB asks the kernel for huge pages
-// before anything touches it, so it faults once per 2 MiB instead.
+// pages"). Reserved through reserveFresh, an array of a MiB or more is sized to whole huge pages
+// and asks the kernel for them before anything touches it, so it faults once per 2 MiB instead.
 #pragma once
 
 #include <cstddef>
+#include <iterator>
 #include <vector>
 
 namespace quadtri {
 inline namespace v0 {
 
-// Advises the kernel to back the whole pages inside [data, data + bytes) with huge pages when
-// they are first touched; nothing where the platform has no such advice. The memory and what it
-// holds are unchanged.
+// Advises the kernel to back the pages of [data, data + bytes) with huge pages when they are
+// first touched; nothing where the platform has no such advice. The memory and what it holds
+// are unchanged. The range is widened to a huge-page boundary only where the boundary lies in
+// the same 4 KiB page as its end (a page of the same allocation), and narrowed to whole pages
+// otherwise. A first huge page whose memory is already touched (the allocator's header in front
+// of the array) is collapsed into a huge page at once: the kernel would otherwise keep the small
+// page it has and fault the rest of those 2 MiB in 4 KiB at a time.
 void adviseHugePages(void* data, std::size_t bytes);
 
-// Arrays below this many bytes are left alone: they would not fill a huge page of their own.
-constexpr std::size_t kHugePageAdviceBytes = std::size_t(4) << 20;
+// Arrays below this many bytes are left alone: rounded up to a huge page they would waste more
+// than they hold.
+constexpr std::size_t kHugePageAdviceBytes = std::size_t(2) << 20;
+
+// The capacity in bytes reserved for an advised array of `bytes`: a whole number of 2 MiB huge
+// pages less one 4 KiB page. An allocator that maps a large block afresh with its header in
+// front (glibc: 16 bytes) then asks for exactly whole huge pages, which Linux places on a
+// huge-page boundary, so every page of the array can be a huge one; without the rounding the
+// block straddles its first and last huge pages and those stay small (one fault per 4 KiB).
+std::size_t hugePageCapacity(std::size_t bytes);
 
 // Reserves room for n elements in a vector about to be sized and filled; when that allocates an
-// array of kHugePageAdviceBytes or more, it is advised onto huge pages before its first touch.
-// What v holds is kept.
+// array of kHugePageAdviceBytes or more, its capacity is rounded by hugePageCapacity and its
+// first n elements are advised onto huge pages before their first touch (the capacity past them
+// is never touched, so it costs address space only). What v holds is kept.
 template <class T>
 void reserveFresh(std::vector<T>& v, std::size_t n) {
     if (n <= v.capacity()) return;
-    v.reserve(n);
-    if (n * sizeof(T) >= kHugePageAdviceBytes)
-        adviseHugePages(v.data() + v.size(), (v.capacity() - v.size()) * sizeof(T));
+    // (A size near max_size goes to reserve as it is, which refuses it as it would anyway.)
+    if (n > v.max_size() / 2 || n * sizeof(T) < kHugePageAdviceBytes) return v.reserve(n);
+    // A new block advised before v's elements are copied into it: a copy made first would touch
+    // its pages as small ones.
+    std::vector<T> fresh;
+    fresh.reserve(hugePageCapacity(n * sizeof(T)) / sizeof(T));
+    adviseHugePages(fresh.data(), n * sizeof(T));
+    fresh.insert(fresh.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
+    v.swap(fresh);
 }
 
 // resize(n) of a vector about to be filled, through reserveFresh.
