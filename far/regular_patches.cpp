@@ -45,36 +45,98 @@ bool regularVertex(const Topology& t, int v, int kind) {
     return true;
 }
 
+// The face across the edge that leaves corner v of face a (the walk's step around v).
+int faceAcross(const Topology& t, int a, int v) {
+    const IndexSpan across = t.facesOfEdge(t.edgeOfCorner(a, t.cornerOfVertex(a, v)));
+    return across[0] == a ? across[1] : across[0];
+}
+
+// The faces around each regular vertex in the walk's order: from one of them, faceAcross the
+// valence times, once per vertex. The patches of a vertex's faces then read its ring instead of
+// walking it again, once per face around it (six times for a triangle vertex), each step a chain of
+// dependent loads.
+template <int Kind>
+class Rings {
+public:
+    explicit Rings(const Topology& t) : t_(t), state_(std::size_t(t.numVertices), kUnknown) {}
+
+    // Vertex v's faces from a face `valence` steps round to that face again, or null where they do
+    // not close after the kind's valence, visiting each once.
+    const int* of(int v) {
+        std::uint8_t& state = state_[std::size_t(v)];
+        if (state == kUnknown) state = walk(v) ? kClosed : kOpen;
+        return state == kClosed ? ring_.data() + std::size_t(v) * kValence[Kind] : nullptr;
+    }
+
+private:
+    static constexpr std::uint8_t kUnknown = 0, kClosed = 1, kOpen = 2;
+    bool walk(int v) {
+        if (ring_.empty()) ring_.resize(std::size_t(t_.numVertices) * kValence[Kind]);
+        int* ring = ring_.data() + std::size_t(v) * kValence[Kind];
+        const int start = t_.facesOfVertex(v)[0];
+        int a = start;
+        for (int k = 0; k < kValence[Kind]; ++k) {
+            a = faceAcross(t_, a, v);
+            if (std::find(ring, ring + k, a) != ring + k) return false;
+            ring[k] = a;
+        }
+        return a == start;
+    }
+    const Topology& t_;
+    std::vector<std::uint8_t> state_;
+    std::vector<int> ring_;  // per vertex, its valence's faces (filled for those asked)
+};
+
 // The patch of face f (of `kind`, with regular corners): its corners, then for each corner the
 // vertices of the faces around it, walked from f across the edge leaving the corner, each vertex
 // once (`added[v] == f` marks those taken). Its size, or 0 where the walk does not close after
 // the kind's valence or the patch has not the kind's size (a small torus wraps onto itself).
-int walkPatch(const Topology& t, int f, int kind, int* patch, int* added) {
-    const int n = kFaceSize[kind];
+// With `rings`, a corner's faces come from its ring (the same faces in the same order, from f's
+// place in it), walked only where the ring is not there.
+template <int Kind>
+int walkPatchOf(const Topology& t, int f, int* patch, int* added, Rings<Kind>* rings) {
+    constexpr int n = kFaceSize[Kind], valence = kValence[Kind];
     int size = 0;
     auto add = [&](int v) {
         if (added[v] == f) return true;
-        if (size == kPatchSize[kind]) return false;
+        if (size == kPatchSize[Kind]) return false;
         added[v] = f;
         patch[size++] = v;
         return true;
     };
-    const IndexSpan corners = t.verticesOfFace(f);
-    for (int v : corners)
-        if (!add(v)) return 0;
-    for (int v : corners) {
+    // Face a's vertices after v in its corner order (a corner wraps without a division).
+    auto addFan = [&](int a, int v) {
+        const int* verts = t.verticesOfFace(a).begin();
+        const int c = t.cornerOfVertex(a, v);
+        for (int j = 1, k = c + 1; j < n; ++j, ++k)
+            if (!add(verts[k < n ? k : k - n])) return false;
+        return true;
+    };
+    const int* corners = t.verticesOfFace(f).begin();
+    for (int i = 0; i < n; ++i)
+        if (!add(corners[i])) return 0;
+    for (int i = 0; i < n; ++i) {
+        const int v = corners[i];
+        const int* ring = rings ? rings->of(v) : nullptr;
+        const int* self = ring ? std::find(ring, ring + valence, f) : nullptr;
+        if (self && self != ring + valence) {
+            // The walk from f takes the ring's faces after f, round to f itself.
+            for (int k = 1, at = int(self - ring); k <= valence; ++k)
+                if (!addFan(ring[(at + k) % valence], v)) return 0;
+            continue;
+        }
         int a = f;
-        for (int step = 0; step < kValence[kind]; ++step) {
-            const IndexSpan across = t.facesOfEdge(t.edgeOfCorner(a, t.cornerOfVertex(a, v)));
-            a = across[0] == a ? across[1] : across[0];
-            const IndexSpan verts = t.verticesOfFace(a);
-            const int c = t.cornerOfVertex(a, v);
-            for (int j = 1; j < n; ++j)
-                if (!add(verts[(c + j) % n])) return 0;
+        for (int step = 0; step < valence; ++step) {
+            a = faceAcross(t, a, v);
+            if (!addFan(a, v)) return 0;
         }
         if (a != f) return 0;
     }
-    return size == kPatchSize[kind] ? size : 0;
+    return size == kPatchSize[Kind] ? size : 0;
+}
+
+int walkPatch(const Topology& t, int f, int kind, int* patch, int* added) {
+    return kind == 0 ? walkPatchOf<0>(t, f, patch, added, nullptr) : walkPatchOf<1>(t, f, patch, added, nullptr);
 }
 
 // One level down the children of some control faces: `cells` holds each face's cells (its
@@ -207,6 +269,8 @@ void RegularPatches::findRegularFaces() {
     faceKind_.assign(std::size_t(t.numFaces()), 0);
     std::vector<std::uint8_t> regular[2];  // per vertex: 0 unknown, 1 regular, 2 not
     std::vector<int> added(std::size_t(t.numVertices), -1);  // walkPatch's marks
+    Rings<0> quadRings(t);
+    Rings<1> triangleRings(t);
     auto isRegular = [&](int v, int kind) {
         std::uint8_t& r = regular[kind][std::size_t(v)];
         if (r == 0) r = regularVertex(t, v, kind) ? 1 : 2;
@@ -219,7 +283,8 @@ void RegularPatches::findRegularFaces() {
         const IndexSpan corners = t.verticesOfFace(f);
         if (!std::all_of(corners.begin(), corners.end(), [&](int v) { return isRegular(v, kind); })) continue;
         int patch[kMaxPatch];
-        const int size = walkPatch(t, f, kind, patch, added.data());
+        const int size = kind == 0 ? walkPatchOf<0>(t, f, patch, added.data(), &quadRings)
+                                   : walkPatchOf<1>(t, f, patch, added.data(), &triangleRings);
         if (size == 0 || !std::all_of(patch, patch + size, [&](int v) { return isRegular(v, kind); })) continue;
         patchStart_[std::size_t(f)] = int(patchVerts_.size());
         patchVerts_.insert(patchVerts_.end(), patch, patch + size);
