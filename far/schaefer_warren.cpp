@@ -10,10 +10,13 @@ inline namespace v0 {
 UnzippedLevel::UnzippedLevel(const Topology& t)
     : triangleCopies(unzipStencils(t, Piece::Triangle)),
       quadCopies(unzipStencils(t, Piece::Quad)),
+      vertexSplits(t.numVertices, 0),
       faceTouches(t.numFaces(), 0) {
+    // Both pieces' copies have one entry per network edge besides the vertex itself.
+    for (int v = 0; v < t.numVertices; ++v) vertexSplits[v] = quadCopies.sizes[v] > 1 ? 1 : 0;
     for (int f = 0; f < t.numFaces(); ++f)
         for (int v : t.verticesOfFace(f))
-            if (quadCopies.sizes[v] > 1) faceTouches[f] = 1;
+            if (vertexSplits[v]) faceTouches[f] = 1;
 }
 
 SchaeferWarrenMasks::SchaeferWarrenMasks(const Topology& topology, const UnzippedLevel& unzipped,
@@ -33,12 +36,29 @@ bool SchaeferWarrenMasks::touchesVertex(int v) const {
 }
 
 void SchaeferWarrenMasks::addCopy(int v, bool quad, double scale) {
-    const StencilTableD& copies = quad ? u_.quadCopies : u_.triangleCopies;
-    // The copy's bounds read once: the accumulator's int stores could otherwise change them.
-    const int first = copies.offsets[v], last = first + copies.sizes[v];
-    const int* indices = copies.indices.data();
-    const double* weights = copies.weights.data();
-    for (int k = first; k < last; ++k) acc_.add(indices[k], scale * weights[k]);
+    if (!u_.vertexSplits[v]) quad = false;  // both copies are v itself: one term
+    for (Copy& c : copies_)
+        if (c.vertex == v && c.quad == quad) {
+            c.weight += scale;
+            return;
+        }
+    copies_.push_back({v, quad, scale});
+}
+
+void SchaeferWarrenMasks::flushCopies() {
+    for (const Copy& c : copies_) {
+        if (!u_.vertexSplits[c.vertex]) {  // the copy is the vertex with weight 1
+            acc_.add(c.vertex, c.weight);
+            continue;
+        }
+        const StencilTableD& table = c.quad ? u_.quadCopies : u_.triangleCopies;
+        // The copy's bounds read once: the accumulator's int stores could otherwise change them.
+        const int first = table.offsets[c.vertex], last = first + table.sizes[c.vertex];
+        const int* indices = table.indices.data();
+        const double* weights = table.weights.data();
+        for (int k = first; k < last; ++k) acc_.add(indices[k], c.weight * weights[k]);
+    }
+    copies_.clear();
 }
 
 void SchaeferWarrenMasks::addPoint(Point p, bool quad, double scale) {
@@ -78,6 +98,7 @@ void SchaeferWarrenMasks::facePoint(int f, double scale) {
                                {Point::Edge, t_.edgeOfCorner(f, i)}};
         addCentroid(quad, 4, scale / n);
     }
+    flushCopies();
 }
 
 // Each quad-like face gives two child quads (½ each), each triangle three child triangles (⅓
@@ -103,6 +124,7 @@ void SchaeferWarrenMasks::smoothEdgePoint(int e, double scale) {
             addCentroid(c, 4, scale / (2 * s));
         }
     }
+    flushCopies();
 }
 
 // avg over the child faces at v, then v2 = v0 + (1 + η) 2sα (avg − v0) with α = 1/(1 + nE/2 + nQ/4).
@@ -125,6 +147,7 @@ void SchaeferWarrenMasks::smoothVertexPoint(int v, double scale) {
             addCentroid(quad, 4, scale * k / (2 * s));
         }
     }
+    flushCopies();
     acc_.add(v, scale * (1.0 - k));
 }
 

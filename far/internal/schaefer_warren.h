@@ -22,6 +22,10 @@ struct UnzippedLevel : SchemeLevel {
     explicit UnzippedLevel(const Topology& topology);
 
     StencilTableD triangleCopies, quadCopies;
+    // Per vertex: its copies are more than itself (it has network edges). Most vertices of a
+    // level past the first have none, and a mask reads their copies (itself, weight 1) without
+    // the tables' four rows.
+    std::vector<uint8_t> vertexSplits;
     std::vector<uint8_t> faceTouches;  // per face: one of its vertices has network edges
 };
 
@@ -50,13 +54,24 @@ private:
         enum Kind { Vertex, Edge, Face } kind;
         int index;
     };
+    // A mask's copies are gathered first, each (vertex, piece) once with its summed weight, and
+    // read from the copy tables by flushCopies at the end of the mask: the child centroids around
+    // a child share most of their points (an edge's midpoint is in four of its edge mask's
+    // centroids), which read the same rows over and over.
     void addCopy(int vertex, bool quad, double scale);
+    void flushCopies();
     void addPoint(Point p, bool quad, double scale);
     // Centroid of a child quad (4 corners) or the triangle centroid ¼ x + ⅜ (b + c) of a child
     // triangle whose first corner x is the vertex being averaged.
     void addCentroid(const Point* corners, int count, double scale);
 
     const UnzippedLevel& u_;
+    struct Copy {
+        int vertex;
+        bool quad;
+        double weight;
+    };
+    std::vector<Copy> copies_;  // the current mask's, in first-added order
 };
 
 const SchemeRules& schaeferWarrenRules();
