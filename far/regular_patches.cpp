@@ -54,7 +54,7 @@ int faceAcross(const Topology& t, int a, int v) {
 // The faces around each regular vertex in the walk's order: from one of them, faceAcross the
 // valence times, once per vertex. The patches of a vertex's faces then read its ring instead of
 // walking it again, once per face around it (six times for a triangle vertex), each step a chain of
-// dependent loads.
+// dependent loads. Held while the regular faces are found (an int per vertex and valence).
 template <int Kind>
 class Rings {
 public:

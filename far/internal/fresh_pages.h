@@ -1,6 +1,6 @@
 // Large arrays that a level build allocates and then fills: their first touch, one page fault
 // per 4 KiB page, was about half the build's time (docs/architecture.md, "First touch of fresh
-// pages"). Reserved through reserveFresh, an array of a MiB or more is sized to whole huge pages
+// pages"). Reserved through reserveFresh, an array of 2 MiB or more is sized to whole huge pages
 // and asks the kernel for them before anything touches it, so it faults once per 2 MiB instead.
 #pragma once
 
@@ -13,15 +13,15 @@ inline namespace v0 {
 
 // Advises the kernel to back the pages of [data, data + bytes) with huge pages when they are
 // first touched; nothing where the platform has no such advice. The memory and what it holds
-// are unchanged. The range is widened to a huge-page boundary only where the boundary lies in
-// the same 4 KiB page as its end (a page of the same allocation), and narrowed to whole pages
-// otherwise. A first huge page whose memory is already touched (the allocator's header in front
-// of the array) is collapsed into a huge page at once: the kernel would otherwise keep the small
-// page it has and fault the rest of those 2 MiB in 4 KiB at a time.
+// are unchanged. The range's start moves back to a huge-page boundary where that boundary lies in
+// the 4 KiB page of its first byte (a page of the same allocation), forward to a whole page
+// otherwise; its end is cut at its last whole huge page, so that the tail stays small and nothing
+// past the range becomes resident. A first huge page whose memory is already touched (the
+// allocator's header in front of the array) is collapsed into a huge page at once: the kernel
+// would otherwise keep the small page it has and fault the rest of those 2 MiB in 4 KiB at a time.
 void adviseHugePages(void* data, std::size_t bytes);
 
-// Arrays below this many bytes are left alone: rounded up to a huge page they would waste more
-// than they hold.
+// Arrays below this many bytes are left alone: they fill no huge page.
 constexpr std::size_t kHugePageAdviceBytes = std::size_t(2) << 20;
 
 // The capacity in bytes reserved for an advised array of `bytes`: a whole number of 2 MiB huge
