@@ -1,7 +1,8 @@
-// far/internal/fresh_pages.h: the arrays a level build fills, reserved onto huge pages. What they
-// hold must not change; where Linux has transparent huge pages, the advice must cover the
-// array's first huge page too (the one its allocator's header shares), which the kernel shows
-// per mapping as THPeligible in /proc/self/smaps.
+// far/internal/fresh_pages.h: the arrays a level build fills, reserved onto huge pages and
+// populated ahead. What they hold must not change; where Linux has transparent huge pages, the
+// advice must cover the array's first huge page too (the one its allocator's header shares),
+// which the kernel shows per mapping as THPeligible in /proc/self/smaps; populating makes the
+// range's whole pages resident (mincore) and nothing around them, and leaves a reused block.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -105,6 +106,54 @@ TEST(FreshPages, AdviceTakesInTheFirstHugePageAndKeepsItsBytes) {
     for (std::size_t i = 0; i < bytes; i += 4096) array[i] = 1;
     for (int i = 0; i < 16; ++i) EXPECT_EQ(base[i], 0xA0 + i);
     munmap(mapping, length);
+}
+
+// Whether the kernel is at least major.minor (MADV_POPULATE_WRITE: 5.14).
+bool kernelAtLeast(int major, int minor) {
+    std::ifstream f("/proc/sys/kernel/osrelease");
+    int a = 0, b = 0;
+    char dot = 0;
+    return f >> a >> dot >> b && (a > major || (a == major && b >= minor));
+}
+
+// Which of the n pages from `first` are resident.
+std::vector<bool> residentPages(const unsigned char* first, std::size_t n) {
+    std::vector<unsigned char> bits(n);
+    EXPECT_EQ(mincore(const_cast<unsigned char*>(first), n * 4096, bits.data()), 0);
+    std::vector<bool> resident(n);
+    for (std::size_t i = 0; i < n; ++i) resident[i] = bits[i] & 1;
+    return resident;
+}
+
+TEST(FreshPages, PopulatesTheWholePagesOfAFreshRangeOnly) {
+    if (!kernelAtLeast(5, 14)) GTEST_SKIP() << "no MADV_POPULATE_WRITE before Linux 5.14";
+    const std::size_t pages = 64;
+    void* mapping = mmap(nullptr, pages * 4096, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    ASSERT_NE(mapping, MAP_FAILED);
+    auto* base = static_cast<unsigned char*>(mapping);
+    // Bytes 100 into page 0 to 100 into page 40: whole pages 1-39.
+    populatePages(base + 100, 40 * 4096);
+    const std::vector<bool> resident = residentPages(base, pages);
+    EXPECT_FALSE(resident[0]);
+    for (std::size_t i = 1; i < 40; ++i) EXPECT_TRUE(resident[i]) << i;
+    for (std::size_t i = 40; i < pages; ++i) EXPECT_FALSE(resident[i]) << i;
+    for (std::size_t i = 0; i < pages * 4096; ++i)
+        if (base[i] != 0) FAIL() << "byte " << i << " changed";
+    munmap(mapping, pages * 4096);
+}
+
+TEST(FreshPages, LeavesARangeWhoseLastPageIsResident) {
+    if (!kernelAtLeast(5, 14)) GTEST_SKIP() << "no MADV_POPULATE_WRITE before Linux 5.14";
+    const std::size_t pages = 64;
+    void* mapping = mmap(nullptr, pages * 4096, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    ASSERT_NE(mapping, MAP_FAILED);
+    auto* base = static_cast<unsigned char*>(mapping);
+    base[39 * 4096] = 7;  // a block the allocator reused: taken as resident throughout
+    populatePages(base, 40 * 4096);
+    const std::vector<bool> resident = residentPages(base, pages);
+    for (std::size_t i = 0; i < 39; ++i) EXPECT_FALSE(resident[i]) << i;
+    EXPECT_EQ(base[39 * 4096], 7);
+    munmap(mapping, pages * 4096);
 }
 
 #endif

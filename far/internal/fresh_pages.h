@@ -1,7 +1,8 @@
 // Large arrays that a level build allocates and then fills: their first touch, one page fault
 // per 4 KiB page, was about half the build's time (docs/architecture.md, "First touch of fresh
 // pages"). Reserved through reserveFresh, an array of 2 MiB or more is sized to whole huge pages
-// and asks the kernel for them before anything touches it, so it faults once per 2 MiB instead.
+// and asks the kernel for them before anything touches it, so it faults once per 2 MiB instead;
+// resizeFresh and assignFresh, which know the size, also have its pages made resident ahead.
 #pragma once
 
 #include <cstddef>
@@ -49,10 +50,22 @@ void reserveFresh(std::vector<T>& v, std::size_t n) {
     v.swap(fresh);
 }
 
+// Makes the whole pages of [data, data + bytes) resident before they are written, in parallel,
+// each task a stretch of them (Linux 5.14: MADV_POPULATE_WRITE); nothing elsewhere, or where the
+// range's last page is resident already (a block the allocator reused). Faulting them in one call
+// per stretch saves the trap of a fault per page that the writes would take, and the writes that
+// follow (a vector's value-initialisation, on one thread) find them there.
+void populatePages(void* data, std::size_t bytes);
+
+// Arrays of fewer bytes are not populated ahead: a handful of faults.
+constexpr std::size_t kPopulateBytes = std::size_t(256) << 10;
+
 // resize(n) of a vector about to be filled, through reserveFresh.
 template <class T>
 void resizeFresh(std::vector<T>& v, std::size_t n) {
     reserveFresh(v, n);
+    if (n > v.size() && (n - v.size()) * sizeof(T) >= kPopulateBytes)
+        populatePages(v.data() + v.size(), (n - v.size()) * sizeof(T));
     v.resize(n);
 }
 
@@ -61,6 +74,7 @@ template <class T, class Value>
 void assignFresh(std::vector<T>& v, std::size_t n, Value value) {
     v.clear();
     reserveFresh(v, n);
+    if (n * sizeof(T) >= kPopulateBytes) populatePages(v.data(), n * sizeof(T));
     v.assign(n, T(value));
 }
 
