@@ -55,6 +55,24 @@ TEST(FreshPages, KeepsWhatTheVectorHolds) {
 
 #if defined(__linux__)
 
+// Fresh anonymous memory of its own, unmapped at the end of the test.
+class FreshMapping {
+public:
+    explicit FreshMapping(std::size_t bytes)
+        : bytes_(bytes), data_(mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0)) {}
+    ~FreshMapping() {
+        if (data_ != MAP_FAILED) munmap(data_, bytes_);
+    }
+    FreshMapping(const FreshMapping&) = delete;
+    FreshMapping& operator=(const FreshMapping&) = delete;
+    bool ok() const { return data_ != MAP_FAILED; }
+    unsigned char* bytes() const { return static_cast<unsigned char*>(data_); }
+
+private:
+    std::size_t bytes_;
+    void* data_;
+};
+
 // The kernel's mode: "always", "madvise", "never", or "" where it has none.
 std::string transparentHugePages() {
     std::ifstream f("/sys/kernel/mm/transparent_hugepage/enabled");
@@ -88,10 +106,9 @@ TEST(FreshPages, AdviceTakesInTheFirstHugePageAndKeepsItsBytes) {
     const std::string mode = transparentHugePages();
     if (mode != "always" && mode != "madvise") GTEST_SKIP() << "no transparent huge pages";
     // Four huge pages on a huge-page boundary, from a mapping of five.
-    const std::size_t length = 5 * kHuge;
-    void* mapping = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    ASSERT_NE(mapping, MAP_FAILED);
-    auto* base = reinterpret_cast<unsigned char*>((std::uintptr_t(mapping) + kHuge - 1) / kHuge * kHuge);
+    const FreshMapping mapping(5 * kHuge);
+    ASSERT_TRUE(mapping.ok());
+    auto* base = reinterpret_cast<unsigned char*>((std::uintptr_t(mapping.bytes()) + kHuge - 1) / kHuge * kHuge);
     // An allocator's header in front of the array: the first page is touched before the advice.
     for (int i = 0; i < 16; ++i) base[i] = static_cast<unsigned char>(0xA0 + i);
     unsigned char* array = base + 16;
@@ -105,16 +122,12 @@ TEST(FreshPages, AdviceTakesInTheFirstHugePageAndKeepsItsBytes) {
     }
     for (std::size_t i = 0; i < bytes; i += 4096) array[i] = 1;
     for (int i = 0; i < 16; ++i) EXPECT_EQ(base[i], 0xA0 + i);
-    munmap(mapping, length);
 }
 
 // Whether the kernel takes MADV_POPULATE_WRITE (23; Linux 5.14), tried on a page of its own.
 bool kernelPopulates() {
-    void* page = mmap(nullptr, 4096, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (page == MAP_FAILED) return false;
-    const bool taken = madvise(page, 4096, 23) == 0;
-    munmap(page, 4096);
-    return taken;
+    const FreshMapping page(4096);
+    return page.ok() && madvise(page.bytes(), 4096, 23) == 0;
 }
 
 // Which of the n pages from `first` are resident.
@@ -129,9 +142,9 @@ std::vector<bool> residentPages(const unsigned char* first, std::size_t n) {
 TEST(FreshPages, PopulatesTheWholePagesOfAFreshRangeOnly) {
     if (!kernelPopulates()) GTEST_SKIP() << "the kernel has no MADV_POPULATE_WRITE (Linux 5.14)";
     const std::size_t pages = 64;
-    void* mapping = mmap(nullptr, pages * 4096, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    ASSERT_NE(mapping, MAP_FAILED);
-    auto* base = static_cast<unsigned char*>(mapping);
+    const FreshMapping mapping(pages * 4096);
+    ASSERT_TRUE(mapping.ok());
+    unsigned char* base = mapping.bytes();
     // Bytes 100 into page 0 to 100 into page 40: whole pages 1-39.
     populatePages(base + 100, 40 * 4096);
     const std::vector<bool> resident = residentPages(base, pages);
@@ -140,21 +153,19 @@ TEST(FreshPages, PopulatesTheWholePagesOfAFreshRangeOnly) {
     for (std::size_t i = 40; i < pages; ++i) EXPECT_FALSE(resident[i]) << i;
     for (std::size_t i = 0; i < pages * 4096; ++i)
         if (base[i] != 0) FAIL() << "byte " << i << " changed";
-    munmap(mapping, pages * 4096);
 }
 
 TEST(FreshPages, LeavesARangeWhoseLastPageIsResident) {
     if (!kernelPopulates()) GTEST_SKIP() << "the kernel has no MADV_POPULATE_WRITE (Linux 5.14)";
     const std::size_t pages = 64;
-    void* mapping = mmap(nullptr, pages * 4096, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    ASSERT_NE(mapping, MAP_FAILED);
-    auto* base = static_cast<unsigned char*>(mapping);
+    const FreshMapping mapping(pages * 4096);
+    ASSERT_TRUE(mapping.ok());
+    unsigned char* base = mapping.bytes();
     base[39 * 4096] = 7;  // a block the allocator reused: taken as resident throughout
     populatePages(base, 40 * 4096);
     const std::vector<bool> resident = residentPages(base, pages);
     for (std::size_t i = 0; i < 39; ++i) EXPECT_FALSE(resident[i]) << i;
     EXPECT_EQ(base[39 * 4096], 7);
-    munmap(mapping, pages * 4096);
 }
 
 #endif
