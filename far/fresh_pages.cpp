@@ -24,9 +24,9 @@ constexpr std::size_t kSmallPage = 4096;
 constexpr int kCollapse = 25;
 // MADV_POPULATE_WRITE (5.14), likewise.
 constexpr int kPopulateWrite = 23;
-#endif
 // Bytes a task populates: enough to amortise the call and the task.
 constexpr std::size_t kPopulateGrain = std::size_t(1) << 20;
+#endif
 
 }  // namespace
 

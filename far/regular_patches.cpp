@@ -51,31 +51,31 @@ int faceAcross(const Topology& t, int a, int v) {
     return across[0] == a ? across[1] : across[0];
 }
 
-// The faces around each regular vertex in the walk's order: from one of them, faceAcross the
-// valence times, once per vertex. The patches of a vertex's faces then read its ring instead of
-// walking it again, once per face around it (six times for a triangle vertex), each step a chain of
-// dependent loads. Held while the regular faces are found (an int per vertex and valence).
-template <int Kind>
+// The faces around each regular vertex of one kind in the walk's order: from one of them,
+// faceAcross the kind's valence times, once per vertex. The patches of a vertex's faces then read
+// its ring instead of walking it again, once per face around it (six times for a triangle
+// vertex), each step a chain of dependent loads. Held while the regular faces are found (an int
+// per vertex and valence).
 class Rings {
 public:
-    explicit Rings(const Topology& t) : t_(t), state_(std::size_t(t.numVertices), kUnknown) {}
+    Rings(const Topology& t, int kind) : t_(t), valence_(kValence[kind]), state_(std::size_t(t.numVertices), kUnknown) {}
 
     // Vertex v's faces from a face `valence` steps round to that face again, or null where they do
     // not close after the kind's valence, visiting each once.
     const int* of(int v) {
         std::uint8_t& state = state_[std::size_t(v)];
         if (state == kUnknown) state = walk(v) ? kClosed : kOpen;
-        return state == kClosed ? ring_.data() + std::size_t(v) * kValence[Kind] : nullptr;
+        return state == kClosed ? ring_.data() + std::size_t(v) * valence_ : nullptr;
     }
 
 private:
     static constexpr std::uint8_t kUnknown = 0, kClosed = 1, kOpen = 2;
     bool walk(int v) {
-        if (ring_.empty()) ring_.resize(std::size_t(t_.numVertices) * kValence[Kind]);
-        int* ring = ring_.data() + std::size_t(v) * kValence[Kind];
+        if (ring_.empty()) ring_.resize(std::size_t(t_.numVertices) * valence_);
+        int* ring = ring_.data() + std::size_t(v) * valence_;
         const int start = t_.facesOfVertex(v)[0];
         int a = start;
-        for (int k = 0; k < kValence[Kind]; ++k) {
+        for (int k = 0; k < valence_; ++k) {
             a = faceAcross(t_, a, v);
             if (std::find(ring, ring + k, a) != ring + k) return false;
             ring[k] = a;
@@ -83,6 +83,7 @@ private:
         return a == start;
     }
     const Topology& t_;
+    int valence_;
     std::vector<std::uint8_t> state_;
     std::vector<int> ring_;  // per vertex, its valence's faces (filled for those asked)
 };
@@ -94,7 +95,7 @@ private:
 // With `rings`, a corner's faces come from its ring (the same faces in the same order, from f's
 // place in it), walked only where the ring is not there.
 template <int Kind>
-int walkPatchOf(const Topology& t, int f, int* patch, int* added, Rings<Kind>* rings) {
+int walkPatchOf(const Topology& t, int f, int* patch, int* added, Rings* rings) {
     constexpr int n = kFaceSize[Kind], valence = kValence[Kind];
     int size = 0;
     auto add = [&](int v) {
@@ -135,8 +136,8 @@ int walkPatchOf(const Topology& t, int f, int* patch, int* added, Rings<Kind>* r
     return size == kPatchSize[Kind] ? size : 0;
 }
 
-int walkPatch(const Topology& t, int f, int kind, int* patch, int* added) {
-    return kind == 0 ? walkPatchOf<0>(t, f, patch, added, nullptr) : walkPatchOf<1>(t, f, patch, added, nullptr);
+int walkPatch(const Topology& t, int f, int kind, int* patch, int* added, Rings* rings = nullptr) {
+    return kind == 0 ? walkPatchOf<0>(t, f, patch, added, rings) : walkPatchOf<1>(t, f, patch, added, rings);
 }
 
 // One level down the children of some control faces: `cells` holds each face's cells (its
@@ -269,8 +270,7 @@ void RegularPatches::findRegularFaces() {
     faceKind_.assign(std::size_t(t.numFaces()), 0);
     std::vector<std::uint8_t> regular[2];  // per vertex: 0 unknown, 1 regular, 2 not
     std::vector<int> added(std::size_t(t.numVertices), -1);  // walkPatch's marks
-    Rings<0> quadRings(t);
-    Rings<1> triangleRings(t);
+    Rings rings[2] = {Rings(t, 0), Rings(t, 1)};
     auto isRegular = [&](int v, int kind) {
         std::uint8_t& r = regular[kind][std::size_t(v)];
         if (r == 0) r = regularVertex(t, v, kind) ? 1 : 2;
@@ -283,8 +283,7 @@ void RegularPatches::findRegularFaces() {
         const IndexSpan corners = t.verticesOfFace(f);
         if (!std::all_of(corners.begin(), corners.end(), [&](int v) { return isRegular(v, kind); })) continue;
         int patch[kMaxPatch];
-        const int size = kind == 0 ? walkPatchOf<0>(t, f, patch, added.data(), &quadRings)
-                                   : walkPatchOf<1>(t, f, patch, added.data(), &triangleRings);
+        const int size = walkPatch(t, f, kind, patch, added.data(), &rings[kind]);
         if (size == 0 || !std::all_of(patch, patch + size, [&](int v) { return isRegular(v, kind); })) continue;
         patchStart_[std::size_t(f)] = int(patchVerts_.size());
         patchVerts_.insert(patchVerts_.end(), patch, patch + size);

@@ -139,33 +139,37 @@ std::vector<bool> residentPages(const unsigned char* first, std::size_t n) {
     return resident;
 }
 
-TEST(FreshPages, PopulatesTheWholePagesOfAFreshRangeOnly) {
-    if (!kernelPopulates()) GTEST_SKIP() << "the kernel has no MADV_POPULATE_WRITE (Linux 5.14)";
-    const std::size_t pages = 64;
-    const FreshMapping mapping(pages * 4096);
-    ASSERT_TRUE(mapping.ok());
-    unsigned char* base = mapping.bytes();
+// 64 fresh pages, where the kernel takes MADV_POPULATE_WRITE.
+class PopulatePages : public ::testing::Test {
+protected:
+    static constexpr std::size_t kPages = 64;
+    void SetUp() override {
+        if (!kernelPopulates()) GTEST_SKIP() << "the kernel has no MADV_POPULATE_WRITE (Linux 5.14)";
+        ASSERT_TRUE(mapping_.ok());
+    }
+    unsigned char* base() const { return mapping_.bytes(); }
+
+private:
+    FreshMapping mapping_{kPages * 4096};
+};
+
+TEST_F(PopulatePages, TheWholePagesOfAFreshRangeOnly) {
     // Bytes 100 into page 0 to 100 into page 40: whole pages 1-39.
-    populatePages(base + 100, 40 * 4096);
-    const std::vector<bool> resident = residentPages(base, pages);
+    populatePages(base() + 100, 40 * 4096);
+    const std::vector<bool> resident = residentPages(base(), kPages);
     EXPECT_FALSE(resident[0]);
     for (std::size_t i = 1; i < 40; ++i) EXPECT_TRUE(resident[i]) << i;
-    for (std::size_t i = 40; i < pages; ++i) EXPECT_FALSE(resident[i]) << i;
-    for (std::size_t i = 0; i < pages * 4096; ++i)
-        if (base[i] != 0) FAIL() << "byte " << i << " changed";
+    for (std::size_t i = 40; i < kPages; ++i) EXPECT_FALSE(resident[i]) << i;
+    for (std::size_t i = 0; i < kPages * 4096; ++i)
+        if (base()[i] != 0) FAIL() << "byte " << i << " changed";
 }
 
-TEST(FreshPages, LeavesARangeWhoseLastPageIsResident) {
-    if (!kernelPopulates()) GTEST_SKIP() << "the kernel has no MADV_POPULATE_WRITE (Linux 5.14)";
-    const std::size_t pages = 64;
-    const FreshMapping mapping(pages * 4096);
-    ASSERT_TRUE(mapping.ok());
-    unsigned char* base = mapping.bytes();
-    base[39 * 4096] = 7;  // a block the allocator reused: taken as resident throughout
-    populatePages(base, 40 * 4096);
-    const std::vector<bool> resident = residentPages(base, pages);
+TEST_F(PopulatePages, LeavesARangeWhoseLastPageIsResident) {
+    base()[39 * 4096] = 7;  // a block the allocator reused: taken as resident throughout
+    populatePages(base(), 40 * 4096);
+    const std::vector<bool> resident = residentPages(base(), kPages);
     for (std::size_t i = 0; i < 39; ++i) EXPECT_FALSE(resident[i]) << i;
-    EXPECT_EQ(base[39 * 4096], 7);
+    EXPECT_EQ(base()[39 * 4096], 7);
 }
 
 #endif
