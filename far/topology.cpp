@@ -2,8 +2,12 @@
 #include <quadtri/far/topology.h>
 
 #include "far/internal/face_loops.h"
+#include "far/internal/fresh_pages.h"
 #include "far/internal/scheme.h"
 #include "far/internal/topology_builder.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <string>
@@ -64,6 +68,16 @@ VertexFaceCounts countVertexFaces(const Topology& t, int v) {
 
 namespace {
 
+// body(i) for i in [0, count) on oneTBB's threads, for loops whose items write only their own
+// entries: a level 0 of a million faces flags its edges and vertices in parallel.
+template <class Body>
+void forEach(int count, const Body& body) {
+    constexpr int kGrain = 4096;
+    tbb::parallel_for(tbb::blocked_range<int>(0, count, kGrain), [&](const tbb::blocked_range<int>& r) {
+        for (int i = r.begin(); i != r.end(); ++i) body(i);
+    });
+}
+
 // Prefix sums turning per-item counts (stored at [i+1]) into CSR offsets.
 void countsToOffsets(std::vector<int>& offsets) {
     for (size_t i = 1; i < offsets.size(); ++i) offsets[i] += offsets[i - 1];
@@ -77,23 +91,27 @@ void countsToOffsets(std::vector<int>& offsets) {
 void buildEdges(Topology& t) {
     const int nv = t.numVertices;
     const int nc = t.numFaceVertices();
-    std::vector<int> cornerNext(nc);
+    std::vector<int> cornerNext;
+    resizeFresh(cornerNext, std::size_t(nc));
     for (int f = 0; f < t.numFaces(); ++f) {
         const int b = t.faceOffsets[f], n = t.faceSize(f);
         for (int i = 0; i < n; ++i) cornerNext[b + i] = t.faceVerts[i + 1 == n ? b : b + i + 1];
     }
-    std::vector<int> bucketOffsets(nv + 1, 0);
+    std::vector<int> bucketOffsets;
+    assignFresh(bucketOffsets, std::size_t(nv) + 1, 0);
     for (int c = 0; c < nc; ++c) ++bucketOffsets[std::min(t.faceVerts[c], cornerNext[c]) + 1];
     countsToOffsets(bucketOffsets);
-    std::vector<int> bucket(nc);
+    std::vector<int> bucket;
+    resizeFresh(bucket, std::size_t(nc));
     {
         std::vector<int> fill(bucketOffsets.begin(), bucketOffsets.end() - 1);
         for (int c = 0; c < nc; ++c) bucket[fill[std::min(t.faceVerts[c], cornerNext[c])]++] = c;
     }
-    t.faceEdges.assign(nc, -1);
+    assignFresh(t.faceEdges, std::size_t(nc), -1);
     t.edgeVerts.clear();
-    t.edgeVerts.reserve(nc);  // about nc/2 edges for closed meshes, nc for open ones
-    std::vector<int> edgeToHi(nv, -1);  // edge (lo, hi) of the current bucket lo, or one of an earlier bucket
+    reserveFresh(t.edgeVerts, std::size_t(nc));  // about nc/2 edges for closed meshes, nc for open ones
+    std::vector<int> edgeToHi;
+    assignFresh(edgeToHi, std::size_t(nv), -1);  // edge (lo, hi) of the current bucket lo, or one of an earlier bucket
     for (int lo = 0; lo < nv; ++lo) {
         const int firstEdge = t.numEdges();
         for (int k = bucketOffsets[lo]; k < bucketOffsets[lo + 1]; ++k) {
@@ -125,8 +143,8 @@ bool runsForward(const Topology& t, int f, int e) { return t.verticesOfFace(f)[t
 
 void flagEdges(Topology& t) {
     const int ne = t.numEdges();
-    t.edgeFlags.assign(ne, 0);
-    for (int e = 0; e < ne; ++e) {
+    assignFresh(t.edgeFlags, std::size_t(ne), 0);
+    forEach(ne, [&t](int e) {
         const IndexSpan faces = t.facesOfEdge(e);
         const int nf = faces.size();
         if (t.edgeVerts[2 * e] == t.edgeVerts[2 * e + 1]) {
@@ -144,7 +162,7 @@ void flagEdges(Topology& t) {
                 t.edgeFlags[e] |= kEdgeSeam;
             }
         }
-    }
+    });
 }
 
 // The faces of a manifold vertex form one fan: walk it face to face across manifold edges.
@@ -173,8 +191,8 @@ bool isSingleFan(const Topology& t, int v, int boundaryEdges) {
 
 void flagVertices(Topology& t) {
     const int nv = t.numVertices;
-    t.vertFlags.assign(nv, 0);
-    for (int v = 0; v < nv; ++v) {
+    assignFresh(t.vertFlags, std::size_t(nv), 0);
+    forEach(nv, [&t](int v) {
         int boundary = 0;
         uint8_t flags = 0;
         for (int e : t.edgesOfVertex(v)) {
@@ -191,21 +209,21 @@ void flagVertices(Topology& t) {
         }
         if (nf == 1 && ne == 2) flags |= kVertexCorner;
         t.vertFlags[v] = flags;
-    }
+    });
 }
 
 }  // namespace
 
 void buildIncidences(Topology& t) {
     const int nv = t.numVertices, ne = t.numEdges(), nf = t.numFaces();
-    t.edgeFaceOffsets.assign(ne + 1, 0);
+    assignFresh(t.edgeFaceOffsets, std::size_t(ne) + 1, 0);
     for (int e : t.faceEdges) ++t.edgeFaceOffsets[e + 1];
     countsToOffsets(t.edgeFaceOffsets);
-    t.edgeFaces.resize(t.faceEdges.size());
-    t.vertFaceOffsets.assign(nv + 1, 0);
+    resizeFresh(t.edgeFaces, t.faceEdges.size());
+    assignFresh(t.vertFaceOffsets, std::size_t(nv) + 1, 0);
     for (int v : t.faceVerts) ++t.vertFaceOffsets[v + 1];
     countsToOffsets(t.vertFaceOffsets);
-    t.vertFaces.resize(t.faceVerts.size());
+    resizeFresh(t.vertFaces, t.faceVerts.size());
     {
         std::vector<int> edgeFill(t.edgeFaceOffsets.begin(), t.edgeFaceOffsets.end() - 1);
         std::vector<int> vertFill(t.vertFaceOffsets.begin(), t.vertFaceOffsets.end() - 1);
@@ -215,10 +233,10 @@ void buildIncidences(Topology& t) {
                 t.vertFaces[vertFill[t.faceVerts[c]]++] = f;
             }
     }
-    t.vertEdgeOffsets.assign(nv + 1, 0);
+    assignFresh(t.vertEdgeOffsets, std::size_t(nv) + 1, 0);
     for (int v : t.edgeVerts) ++t.vertEdgeOffsets[v + 1];
     countsToOffsets(t.vertEdgeOffsets);
-    t.vertEdges.resize(t.edgeVerts.size());
+    resizeFresh(t.vertEdges, t.edgeVerts.size());
     std::vector<int> fill(t.vertEdgeOffsets.begin(), t.vertEdgeOffsets.end() - 1);
     for (int e = 0; e < ne; ++e) {
         t.vertEdges[fill[t.edgeVerts[2 * e]]++] = e;
@@ -231,9 +249,9 @@ void completeTopology(Topology& t) {
     buildIncidences(t);
     flagEdges(t);
     flagVertices(t);
-    t.edgeSharpness.assign(t.numEdges(), 0.0f);
-    t.vertSharpness.assign(t.numVertices, 0.0f);
-    t.faceHole.resize(t.numFaces(), 0);
+    assignFresh(t.edgeSharpness, std::size_t(t.numEdges()), 0.0f);
+    assignFresh(t.vertSharpness, std::size_t(t.numVertices), 0.0f);
+    resizeFresh(t.faceHole, std::size_t(t.numFaces()));
 }
 
 int findEdge(const Topology& t, int a, int b) {
@@ -283,8 +301,12 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     t.numVertices = desc.numVertices;
     // Faces become the simple loops they walk around (face_loops.h); firstFace maps each face of
     // the descriptor to its loops, for holes.
-    std::vector<int> sizes, firstFace(size_t(desc.numFaces) + 1, 0);
-    sizes.reserve(size_t(desc.numFaces));
+    // A face's loops keep at most its corners, and most faces are one loop: sized once, the arrays
+    // are not copied as they grow (a million-face cage's faceVerts would be, about twenty times).
+    std::vector<int> sizes, firstFace;
+    assignFresh(firstFace, size_t(desc.numFaces) + 1, 0);
+    reserveFresh(sizes, size_t(desc.numFaces));
+    reserveFresh(t.faceVerts, corners);
     FaceLoopSplitter splitter(desc.numVertices, rules.collapsedEdges());
     const int* verts = desc.faceVertIndices;
     for (int f = 0; f < desc.numFaces; ++f) {
@@ -296,7 +318,7 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
             warnings->push_back({TopologyDiagnostic::Component::Face, f, loops.repeated,
                                  describeLoops(loops)});
     }
-    t.faceOffsets.assign(sizes.size() + 1, 0);
+    assignFresh(t.faceOffsets, sizes.size() + 1, 0);
     for (std::size_t f = 0; f < sizes.size(); ++f) t.faceOffsets[f + 1] = t.faceOffsets[f] + sizes[f];
     if (options.leftHanded) {  // store counter-clockwise: keep the first corner, reverse the rest
         for (int f = 0; f < t.numFaces(); ++f)
@@ -323,10 +345,11 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
     }
 
     // Boundary and non-manifold edges are infinitely sharp.
-    for (int e = 0; e < t.numEdges(); ++e)
+    forEach(t.numEdges(), [&t](int e) {
         if (t.edgeFlags[e] & (kEdgeBoundary | kEdgeNonManifold)) t.edgeSharpness[e] = kInfiniteSharpness;
+    });
 
-    for (int v = 0; v < t.numVertices; ++v) {
+    forEach(t.numVertices, [&t, &options](int v) {
         const uint8_t flags = t.vertFlags[v];
         if ((flags & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner) {
             t.vertSharpness[v] = kInfiniteSharpness;
@@ -340,7 +363,7 @@ Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& option
             if (!nonManifoldCrease) t.vertSharpness[v] = kInfiniteSharpness;
         }
         if (t.vertexFaceCount(v) == 0) t.vertSharpness[v] = kInfiniteSharpness;  // isolated: stays put
-    }
+    });
     if (options.boundary == BoundaryInterpolation::None) {
         for (int v = 0; v < t.numVertices; ++v) {
             if (!(t.vertFlags[v] & kVertexBoundary) || t.vertSharpness[v] >= kInfiniteSharpness) continue;
