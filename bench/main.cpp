@@ -2,7 +2,7 @@
 // whole frame (skin, level N's limit positions and normals) on ~10 000-face cages, build time (one thread and all),
 // table bytes, memory and evaluation time per case, checked for agreement first, plus memcpy bandwidth for
 // reference (256 MiB, and per case a copy the size of the evaluation's working set).
-//   quadtri-bench [--quick] [--limit | --frame] [--json FILE] [--mesh NAME]
+//   quadtri-bench [--quick] [--limit | --frame] [--json FILE] [--mesh NAME] [--keep-freed-memory]
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -11,6 +11,9 @@
 #include <fstream>
 #include <cstdio>
 #include <cstring>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <iostream>
 #include <map>
 #include <memory>
@@ -286,7 +289,7 @@ std::string cpuModel() {
 
 int usage(const char* message) {
     if (message) std::cerr << "quadtri-bench: " << message << "\n";
-    std::cerr << "usage: quadtri-bench [--quick] [--limit | --frame] [--json FILE] [--mesh NAME]\n"
+    std::cerr << "usage: quadtri-bench [--quick] [--limit | --frame] [--json FILE] [--mesh NAME] [--keep-freed-memory]\n"
                  "  --quick      CI-sized run: 100x100 tori at levels 2-3 (their limit and frames at 2),\n"
                  "               the 2000-segment spheres at level 1, 3 repetitions\n"
                  "  --limit      only the limit cases (limit positions + normals, mesh normals)\n"
@@ -295,12 +298,15 @@ int usage(const char* message) {
                  "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
                  "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad,\n"
                  "               torus1000_quad;\n"
-                 "               frames: torus100_quad, torus71_tri, mixed_limb), e.g. to profile it\n";
+                 "               frames: torus100_quad, torus71_tri, mixed_limb), e.g. to profile it\n"
+                 "  --keep-freed-memory  glibc keeps what both libraries free for their next builds\n"
+                 "               (mallopt: blocks up to 256 MiB from its heap, 1 GiB of free heap kept),\n"
+                 "               as an engine that rebuilds often may set it (README, Using quadtri)\n";
     return message ? 2 : 0;
 }
 
 int run(int argc, char** argv) {
-    bool quick = false, limitOnly = false, frameOnly = false;
+    bool quick = false, limitOnly = false, frameOnly = false, keepFreed = false;
     std::string jsonPath, onlyMesh;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) quick = true;
@@ -308,10 +314,22 @@ int run(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) onlyMesh = argv[++i];
         else if (!std::strcmp(argv[i], "--limit")) limitOnly = true;
         else if (!std::strcmp(argv[i], "--frame")) frameOnly = true;
+        else if (!std::strcmp(argv[i], "--keep-freed-memory")) keepFreed = true;
         else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return usage(nullptr);
         else return usage((std::string("unknown argument ") + argv[i]).c_str());
     }
     if (limitOnly && frameOnly) return usage("--limit and --frame exclude each other");
+    if (keepFreed) {
+#ifdef __GLIBC__
+        // Set before anything is allocated. By default glibc maps blocks past its (adjusting)
+        // threshold afresh and gives its heap's free top back to the kernel, so every repeated
+        // build of either library faults its arrays in again.
+        mallopt(M_MMAP_THRESHOLD, 256 << 20);
+        mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#else
+        return usage("--keep-freed-memory needs glibc's mallopt");
+#endif
+    }
     const int reps = quick ? 3 : 5;
 
     BenchResult result;
