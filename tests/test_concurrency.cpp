@@ -5,7 +5,12 @@
 // positives over an uninstrumented oneTBB.
 #include <gtest/gtest.h>
 
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -111,6 +116,87 @@ TEST(Concurrency, OneConstRefinerReadFromSeveralThreadsGivesTheSerialResults) {
     for (Result& result : threaded) threads.emplace_back([&] { result = readAll(refiner, mesh.positions); });
     for (std::thread& thread : threads) thread.join();
     for (size_t t = 0; t < threaded.size(); ++t) expectSame(serial, threaded[t], "thread " + std::to_string(t));
+}
+
+// Level 0's per-edge and per-vertex passes (flags, fans, boundary tags) run on oneTBB's threads:
+// one thread and four give the same arrays, on a grid large enough for many tasks that has every
+// kind of edge and vertex they tag (boundary, corners, a hole, a fin on a non-manifold edge, a
+// bow tie's pinched vertex, triangles beside quads, creases, an isolated vertex).
+TEST(Concurrency, LevelZeroIsTheSameOnAnyNumberOfThreads) {
+    constexpr int n = 120;  // n x n quads: 14 641 vertices, 28 800 edges
+    auto at = [](int i, int j) { return i * (n + 1) + j; };
+    std::vector<int> sizes, verts;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            if ((i + j) % 7 == 0) {  // some quads split: seams
+                sizes.insert(sizes.end(), {3, 3});
+                verts.insert(verts.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            } else {
+                sizes.push_back(4);
+                verts.insert(verts.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        }
+    const int fin = (n + 1) * (n + 1), tie = fin + 1, isolated = fin + 5;
+    sizes.push_back(3);  // a fin on the edge (60, 60)-(61, 60): three faces there
+    verts.insert(verts.end(), {at(60, 60), at(61, 60), fin});
+    sizes.push_back(6);  // a bow tie hanging off a corner of the grid
+    verts.insert(verts.end(), {at(0, 0), tie, tie + 1, at(0, 0), tie + 2, tie + 3});
+    const std::vector<int> creases = {at(10, 10), at(10, 11), at(10, 11), at(10, 12)};
+    const std::vector<float> creaseWeights = {2.0f, 10.0f}, cornerWeights = {3.0f};
+    const std::vector<int> corners = {at(30, 30)}, holes = {500, 501, 9000};
+    TopologyDescriptor desc;
+    desc.numVertices = isolated + 1;
+    desc.numFaces = int(sizes.size());
+    desc.numVertsPerFace = sizes.data();
+    desc.faceVertIndices = verts.data();
+    desc.numCreases = 2;
+    desc.creaseVertexPairs = creases.data();
+    desc.creaseWeights = creaseWeights.data();
+    desc.numCorners = 1;
+    desc.cornerVertexIndices = corners.data();
+    desc.cornerWeights = cornerWeights.data();
+    desc.numHoles = int(holes.size());
+    desc.holeIndices = holes.data();
+    for (const BoundaryInterpolation boundary :
+         {BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner, BoundaryInterpolation::None}) {
+        Options options;
+        options.scheme = Scheme::CatmullClark;
+        options.boundary = boundary;
+        std::unique_ptr<Refiner> serial, threaded;
+        {
+            const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+            serial = std::make_unique<Refiner>(desc, options);
+        }
+        tbb::task_arena(4).execute([&] { threaded = std::make_unique<Refiner>(desc, options); });
+        const Topology &a = serial->level(0), &b = threaded->level(0);
+        const std::string where = std::string("boundary ") + toString(boundary);
+        EXPECT_EQ(a.numVertices, b.numVertices) << where;
+        EXPECT_EQ(a.faceOffsets, b.faceOffsets) << where;
+        EXPECT_EQ(a.faceVerts, b.faceVerts) << where;
+        EXPECT_EQ(a.faceEdges, b.faceEdges) << where;
+        EXPECT_EQ(a.faceHole, b.faceHole) << where;
+        EXPECT_EQ(a.edgeVerts, b.edgeVerts) << where;
+        EXPECT_EQ(a.edgeFaceOffsets, b.edgeFaceOffsets) << where;
+        EXPECT_EQ(a.edgeFaces, b.edgeFaces) << where;
+        EXPECT_EQ(a.edgeSharpness, b.edgeSharpness) << where;
+        EXPECT_EQ(a.edgeFlags, b.edgeFlags) << where;
+        EXPECT_EQ(a.vertFaceOffsets, b.vertFaceOffsets) << where;
+        EXPECT_EQ(a.vertFaces, b.vertFaces) << where;
+        EXPECT_EQ(a.vertEdgeOffsets, b.vertEdgeOffsets) << where;
+        EXPECT_EQ(a.vertEdges, b.vertEdges) << where;
+        EXPECT_EQ(a.vertSharpness, b.vertSharpness) << where;
+        EXPECT_EQ(a.vertFlags, b.vertFlags) << where;
+        // The grid has what the passes tag: a test that could pass on an untagged level says so.
+        auto count = [](const std::vector<uint8_t>& flags, uint8_t bit) {
+            return std::count_if(flags.begin(), flags.end(), [bit](uint8_t f) { return (f & bit) != 0; });
+        };
+        EXPECT_GT(count(a.edgeFlags, kEdgeBoundary), 4 * n) << where;
+        EXPECT_GE(count(a.edgeFlags, kEdgeNonManifold), 1) << where;
+        EXPECT_GT(count(a.edgeFlags, kEdgeSeam), n) << where;
+        EXPECT_GE(count(a.vertFlags, kVertexCorner), 3) << where;
+        EXPECT_GE(count(a.vertFlags, kVertexNonManifold), 1) << where;
+        EXPECT_EQ(a.vertSharpness[std::size_t(isolated)], kInfiniteSharpness) << where;
+    }
 }
 
 }  // namespace
