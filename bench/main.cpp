@@ -321,7 +321,7 @@ int run(int argc, char** argv) {
     if (limitOnly && frameOnly) return usage("--limit and --frame exclude each other");
     if (keepFreed) {
 #ifdef __GLIBC__
-        // Set before anything is allocated. By default glibc maps blocks past its (adjusting)
+        // Set before the cases allocate. By default glibc maps blocks past its (adjusting)
         // threshold afresh and gives its heap's free top back to the kernel, so every repeated
         // build of either library faults its arrays in again.
         mallopt(M_MMAP_THRESHOLD, 256 << 20);

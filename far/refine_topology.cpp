@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "far/internal/crease.h"
+#include "far/internal/for_each.h"
 #include "far/internal/fresh_pages.h"
 #include "far/internal/topology_builder.h"
 
@@ -24,17 +22,6 @@ ChildNumbering numberChildren(const Topology& parent, TriangleSplit split) {
 }
 
 namespace {
-
-// Items per task of the parallel loops: enough work to amortise a task, few enough that both
-// cores get a share of a small level.
-constexpr int kGrain = 4096;
-
-template <typename Body>
-void forEach(int count, const Body& body) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, count, kGrain), [&](const tbb::blocked_range<int>& r) {
-        for (int i = r.begin(); i != r.end(); ++i) body(i);
-    });
-}
 
 // Builds the child level straight from the parent: its faces, edges, incidences and flags are
 // all known by construction, so no edge search, sort or fan walk is needed, and each array is

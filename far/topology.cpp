@@ -2,12 +2,10 @@
 #include <quadtri/far/topology.h>
 
 #include "far/internal/face_loops.h"
+#include "far/internal/for_each.h"
 #include "far/internal/fresh_pages.h"
 #include "far/internal/scheme.h"
 #include "far/internal/topology_builder.h"
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <string>
@@ -67,16 +65,6 @@ VertexFaceCounts countVertexFaces(const Topology& t, int v) {
 }
 
 namespace {
-
-// body(i) for i in [0, count) on oneTBB's threads, for loops whose items write only their own
-// entries: a level 0 of a million faces flags its edges and vertices in parallel.
-template <class Body>
-void forEach(int count, const Body& body) {
-    constexpr int kGrain = 4096;
-    tbb::parallel_for(tbb::blocked_range<int>(0, count, kGrain), [&](const tbb::blocked_range<int>& r) {
-        for (int i = r.begin(); i != r.end(); ++i) body(i);
-    });
-}
 
 // Prefix sums turning per-item counts (stored at [i+1]) into CSR offsets.
 void countsToOffsets(std::vector<int>& offsets) {
