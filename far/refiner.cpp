@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include <tbb/parallel_invoke.h>
@@ -218,13 +219,27 @@ StencilTable toFloatWithin(const StencilTableD& composed, CompositionBudget& bud
     return toFloatTable(composed);
 }
 
+// Level 1 over the control vertices is level 1's own table. A stored float table is copied: its
+// double copy rounded back gives the same floats, only at the cost of pooling them again (as long
+// as the level's build, for a level-1 factorized table).
+template <class Levels>
+StencilTable levelOneWithin(CompositionBudget& budget, const Levels& levels) {
+    if constexpr (std::is_same_v<decltype(levels.outer(1)), const StencilTable&>) {
+        const StencilTable& stored = levels.outer(1);
+        budget.reserve(floatTableBytes(std::size_t(stored.numStencils()), stored.numEntries()));
+        return stored;
+    } else {
+        return toFloatWithin(composeLevelTables(1, budget, levels), budget);
+    }
+}
+
 // The tables of levels 1..L composed as composeLevelTables does, stored as float: level L is
 // composed over levels 1..L-1 straight into the float table. The budget is kept as for that
 // table's double form rounded by toFloatWithin, so that what is refused, and what the refusal
 // says, stay the same.
 template <class Levels>
 StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const Levels& levels) {
-    if (L == 1) return toFloatWithin(composeLevelTables(1, budget, levels), budget);
+    if (L == 1) return levelOneWithin(budget, levels);
     const std::unique_ptr<RegularPatches> patches = levels.patches(L);
     if (patches) budget.reserve(patches->bytes());
     const KnownStencils* innerKnown = nullptr;

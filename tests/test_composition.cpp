@@ -193,6 +193,8 @@ void checkRefiner(const Refiner& refiner, int maxLevel, const std::string& name)
             expectSame(composeStencilsToFloat(refiner.levelStencils(L), inner), toFloatTable(want), where + " to float");
         }
         expectClose(refiner.factorizedStencils(L), toFloatTable(want), where + " factorized");
+        // Level 1 over the control vertices is level 1's own table, pool and all.
+        if (L == 1) expectSame(refiner.factorizedStencils(1), refiner.levelStencils(1), where + " factorized, its own table");
     }
 }
 
