@@ -53,6 +53,29 @@ struct FloatOuter {
     const int* parents() const { return t.indices.data(); }
 };
 
+// The inner table's stencil j: its entries' sources and weights. A float table's weights widen
+// to double exactly, so composing over it is composing over its toDoubleTable() bitwise, without
+// making that copy (level 1's, under level 2 of every factorized table).
+struct DoubleInner {
+    const StencilTableD& t;
+    int numSources() const { return t.numSourceVertices; }
+    int numStencils() const { return int(t.sizes.size()); }
+    std::size_t numEntries() const { return t.indices.size(); }
+    int size(int j) const { return t.sizes[j]; }
+    const int* indices(int j) const { return t.indices.data() + t.offsets[j]; }
+    const double* weights(int j) const { return t.weights.data() + t.offsets[j]; }
+};
+
+struct FloatInner {
+    const StencilTable& t;
+    int numSources() const { return t.numSourceVertices; }
+    int numStencils() const { return t.numStencils(); }
+    std::size_t numEntries() const { return t.numEntries(); }
+    int size(int j) const { return t.offsets[j + 1] - t.offsets[j]; }
+    const int* indices(int j) const { return t.indices.data() + t.offsets[j]; }
+    const float* weights(int j) const { return t.weights.data() + t.weightOffsets[j]; }
+};
+
 // Entries a double result of n stencils may hold within maxBytes, and within its int offsets.
 std::size_t entryLimit(int n, std::size_t maxBytes) {
     const std::size_t perStencil = std::size_t(n) * kStencilBytes;
@@ -64,11 +87,12 @@ std::size_t entryLimit(int n, std::size_t maxBytes) {
 // left out), and for each of the others the inner table's entries per stored stencil and a
 // quarter more (a composed stencil grows by a tenth to a quarter a level once past the first
 // levels), within `limit`. Past it the arrays grow by half.
-std::size_t expectedEntries(int n, const StencilTableD& inner, const TemplatedStencils& templated, std::size_t limit) {
-    std::size_t stored = inner.sizes.size();
+template <class Inner>
+std::size_t expectedEntries(int n, const Inner& inner, const TemplatedStencils& templated, std::size_t limit) {
+    std::size_t stored = std::size_t(inner.numStencils());
     if (templated.inner)
-        for (std::size_t j = 0; j < inner.sizes.size(); ++j) stored -= templated.inner->has(int(j)) ? 1 : 0;
-    const double perStencil = stored == 0 ? 0.0 : double(inner.indices.size()) / double(stored);
+        for (int j = 0; j < inner.numStencils(); ++j) stored -= templated.inner->has(j) ? 1 : 0;
+    const double perStencil = stored == 0 ? 0.0 : double(inner.numEntries()) / double(stored);
     std::size_t knownEntries = 0;
     int composed = n;
     if (const KnownStencils* known = templated.result)
@@ -84,16 +108,15 @@ std::size_t expectedEntries(int n, const StencilTableD& inner, const TemplatedSt
 // where `innerKnown` has it), scaled by its weight, in entry order, so every sum is added up in
 // the same order whatever the row's layout. A templated inner stencil's entries come in the order
 // the table would have held them (KnownStencils::write).
-template <class Outer>
-void composeOne(const Outer& outer, const StencilTableD& inner, const KnownStencils* innerKnown, int i, ScatterRow& row) {
+template <class Outer, class Inner>
+void composeOne(const Outer& outer, const Inner& inner, const KnownStencils* innerKnown, int i, ScatterRow& row) {
     const int begin = outer.begin(i), end = outer.end(i);
     const int* parents = outer.parents();
-    const int *sizes = inner.sizes.data(), *offsets = inner.offsets.data();
     auto templated = [&](int j) { return innerKnown && innerKnown->has(j); };
     int terms = 0;
     for (int k = begin; k < end; ++k) {
         const int j = parents[k];
-        terms += templated(j) ? innerKnown->size(j) : sizes[j];
+        terms += templated(j) ? innerKnown->size(j) : inner.size(j);
     }
     row.reserve(terms);
     for (int k = begin; k < end; ++k) {
@@ -102,7 +125,7 @@ void composeOne(const Outer& outer, const StencilTableD& inner, const KnownStenc
             const KnownStencils::Entries t = innerKnown->entries(j);
             row.addScaled(t.patch, t.corners, t.weights, t.size, outer.weight(i, k));
         } else {
-            row.addScaled(inner.indices.data() + offsets[j], inner.weights.data() + offsets[j], sizes[j], outer.weight(i, k));
+            row.addScaled(inner.indices(j), inner.weights(j), inner.size(j), outer.weight(i, k));
         }
     }
 }
@@ -133,14 +156,14 @@ void reserveFor(V& v, std::size_t needed, std::size_t limit) {
 // templated one's straight from its template, so that it is written once (or left out).
 // sink.indices() and sink.weights() point at the result's entries (weights null where the
 // result keeps none per entry). Throws std::length_error once the entries pass maxEntries.
-template <class Weight, class Outer, class Sink>
-void composeParts(const Outer& outer, const StencilTableD& inner, std::size_t maxEntries,
+template <class Weight, class Outer, class Inner, class Sink>
+void composeParts(const Outer& outer, const Inner& inner, std::size_t maxEntries,
                   const TemplatedStencils& templated, Sink& sink) {
     const int n = outer.numStencils();
     const int numParts = (n + kPartStencils - 1) / kPartStencils;
     const int wave = std::max(1, std::min(numParts, kPartsPerThread * tbb::this_task_arena::max_concurrency()));
     std::vector<Part<Weight>> parts(static_cast<std::size_t>(wave));
-    tbb::enumerable_thread_specific<ScatterRow> rows([&] { return ScatterRow(inner.numSourceVertices); });
+    tbb::enumerable_thread_specific<ScatterRow> rows([&] { return ScatterRow(inner.numSources()); });
     std::size_t placed = 0;  // entries of the parts placed so far, over every wave
     const KnownStencils* known = templated.result;
     auto isKnown = [&](int i) { return known && known->has(i); };
@@ -226,11 +249,11 @@ struct DoubleSink {
     double* weights() { return result.weights.data(); }
 };
 
-template <class Outer>
-StencilTableD composeDouble(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes,
+template <class Outer, class Inner>
+StencilTableD composeDouble(const Outer& outer, const Inner& inner, std::size_t maxBytes,
                             const TemplatedStencils& templated) {
     StencilTableD result;
-    result.numSourceVertices = inner.numSourceVertices;
+    result.numSourceVertices = inner.numSources();
     const int n = outer.numStencils();
     const std::size_t maxEntries = entryLimit(n, maxBytes);
     reserveFresh(result.sizes, std::size_t(n));
@@ -274,13 +297,13 @@ struct FloatSink {
     float* weights() { return nullptr; }
 };
 
-template <class Outer>
-StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::size_t maxBytes,
+template <class Outer, class Inner>
+StencilTable composeFloat(const Outer& outer, const Inner& inner, std::size_t maxBytes,
                           TemplatedStencils templated) {
     templated.leaveOut = false;
     const KnownStencils* known = templated.result;
     StencilTable result;
-    result.numSourceVertices = inner.numSourceVertices;
+    result.numSourceVertices = inner.numSources();
     const int n = outer.numStencils();
     const std::size_t maxEntries = entryLimit(n, maxBytes);
     reserveFresh(result.offsets, std::size_t(n) + 1);
@@ -307,22 +330,32 @@ StencilTable composeFloat(const Outer& outer, const StencilTableD& inner, std::s
 
 StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes,
                               const TemplatedStencils& templated) {
-    return composeDouble(DoubleOuter{outer}, inner, maxBytes, templated);
+    return composeDouble(DoubleOuter{outer}, DoubleInner{inner}, maxBytes, templated);
 }
 
 StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& inner, std::size_t maxBytes,
                               const TemplatedStencils& templated) {
-    return composeDouble(FloatOuter{outer}, inner, maxBytes, templated);
+    return composeDouble(FloatOuter{outer}, DoubleInner{inner}, maxBytes, templated);
+}
+
+StencilTableD composeStencils(const StencilTable& outer, const StencilTable& inner, std::size_t maxBytes,
+                              const TemplatedStencils& templated) {
+    return composeDouble(FloatOuter{outer}, FloatInner{inner}, maxBytes, templated);
 }
 
 StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner, std::size_t maxBytes,
                                     const TemplatedStencils& templated) {
-    return composeFloat(DoubleOuter{outer}, inner, maxBytes, templated);
+    return composeFloat(DoubleOuter{outer}, DoubleInner{inner}, maxBytes, templated);
 }
 
 StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner, std::size_t maxBytes,
                                     const TemplatedStencils& templated) {
-    return composeFloat(FloatOuter{outer}, inner, maxBytes, templated);
+    return composeFloat(FloatOuter{outer}, DoubleInner{inner}, maxBytes, templated);
+}
+
+StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTable& inner, std::size_t maxBytes,
+                                    const TemplatedStencils& templated) {
+    return composeFloat(FloatOuter{outer}, FloatInner{inner}, maxBytes, templated);
 }
 
 }  // namespace v0

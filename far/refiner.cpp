@@ -174,27 +174,39 @@ const KnownStencils* descend(RegularPatches* patches, CompositionBudget& budget)
 // level L's too, and *leftOut is what the returned table then lacks (null where it lacks
 // nothing), valid until patches descends twice more.
 template <class Levels>
+constexpr bool kStoresLevelOne = std::is_same_v<decltype(std::declval<const Levels&>().outer(1)), const StencilTable&>;
+
+template <class Levels>
 StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels& levels, RegularPatches* patches,
                                  const KnownStencils** leftOut = nullptr) {
-    budget.reserve(levels.bytes(1));
-    StencilTableD composed = levels.table(1);
-    descend(patches, budget);  // level 1 is its own table
+    StencilTableD composed;
     const KnownStencils* innerKnown = nullptr;  // left out of `composed`
-    for (int l = 2; l <= L; ++l) {
+    // Level l over `inner` (of innerBytes in the budget: 0 for a table the Refiner holds).
+    auto compose = [&](int l, const auto& inner, std::size_t innerBytes) {
         budget.reserve(levels.bytes(l));
         const auto& outer = levels.outer(l);  // a reference, or a table kept for this step
         try {
             const KnownStencils* known = descend(patches, budget);
             const bool leaveOut = known && (l < L || leftOut);
-            StencilTableD next = composeStencils(outer, composed, budget.left(), {known, innerKnown, leaveOut});
-            budget.release(levels.bytes(l) + bytesOf(composed));
+            StencilTableD next = composeStencils(outer, inner, budget.left(), {known, innerKnown, leaveOut});
+            budget.release(levels.bytes(l) + innerBytes);
             budget.reserve(bytesOf(next));
             composed = std::move(next);
             innerKnown = leaveOut ? known : nullptr;
         } catch (const std::length_error&) {
             throw budget.refuse(budget.budget() + 1);  // composition stopped at the budget: more, by how much is unknown
         }
+    };
+    descend(patches, budget);  // level 1 is its own table
+    int l = 2;
+    if constexpr (kStoresLevelOne<Levels>) {
+        if (L >= 2) compose(l++, levels.outer(1), 0);  // level 2 straight over level 1's stored table
     }
+    if (l == 2) {
+        budget.reserve(levels.bytes(1));
+        composed = levels.table(1);
+    }
+    for (; l <= L; ++l) compose(l, composed, bytesOf(composed));
     if (leftOut) *leftOut = innerKnown;
     return composed;
 }
@@ -242,17 +254,33 @@ StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const L
     if (L == 1) return levelOneWithin(budget, levels);
     const std::unique_ptr<RegularPatches> patches = levels.patches(L);
     if (patches) budget.reserve(patches->bytes());
-    const KnownStencils* innerKnown = nullptr;
-    const StencilTableD inner = composeLevelTables(L - 1, budget, levels, patches.get(), &innerKnown);
-    budget.reserve(levels.bytes(L));
+    // Level L over `inner` (of innerBytes in the budget: 0 for a table the Refiner holds).
+    auto compose = [&](const auto& inner, const KnownStencils* innerKnown, std::size_t innerBytes) {
+        budget.reserve(levels.bytes(L));
+        StencilTable composed;
+        try {
+            const KnownStencils* known = descend(patches.get(), budget);
+            composed = composeStencilsToFloat(levels.outer(L), inner, budget.left(), {known, innerKnown});
+        } catch (const std::length_error&) {
+            throw budget.refuse(budget.budget() + 1);
+        }
+        budget.release(levels.bytes(L) + innerBytes);
+        return composed;
+    };
     StencilTable composed;
-    try {
-        const KnownStencils* known = descend(patches.get(), budget);
-        composed = composeStencilsToFloat(levels.outer(L), inner, budget.left(), {known, innerKnown});
-    } catch (const std::length_error&) {
-        throw budget.refuse(budget.budget() + 1);
+    bool overStored = false;  // level 2 straight over level 1's stored table
+    if constexpr (kStoresLevelOne<Levels>) {
+        if (L == 2) {
+            descend(patches.get(), budget);  // level 1 is its own table
+            composed = compose(levels.outer(1), nullptr, 0);
+            overStored = true;
+        }
     }
-    budget.release(levels.bytes(L) + bytesOf(inner));
+    if (!overStored) {
+        const KnownStencils* innerKnown = nullptr;
+        const StencilTableD inner = composeLevelTables(L - 1, budget, levels, patches.get(), &innerKnown);
+        composed = compose(inner, innerKnown, bytesOf(inner));
+    }
     budget.reserve(doubleBytes(composed));
     budget.reserve(floatTableBytes(std::size_t(composed.numStencils()), composed.numEntries()));
     return composed;

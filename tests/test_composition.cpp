@@ -191,6 +191,12 @@ void checkRefiner(const Refiner& refiner, int maxLevel, const std::string& name)
             expectSame(composeStencils(levels[std::size_t(L) - 1], inner), want, where);
             expectSame(composeStencils(refiner.levelStencils(L), inner), want, where + " from the float table");
             expectSame(composeStencilsToFloat(refiner.levelStencils(L), inner), toFloatTable(want), where + " to float");
+            if (L == 2) {  // over level 1's float table itself: its weights widen exactly
+                expectSame(composeStencils(refiner.levelStencils(2), refiner.levelStencils(1)), want,
+                           where + " over the float table");
+                expectSame(composeStencilsToFloat(refiner.levelStencils(2), refiner.levelStencils(1)), toFloatTable(want),
+                           where + " over the float table, to float");
+            }
         }
         expectClose(refiner.factorizedStencils(L), toFloatTable(want), where + " factorized");
         // Level 1 over the control vertices is level 1's own table, pool and all.

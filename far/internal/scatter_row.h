@@ -27,7 +27,9 @@ public:
     // Adds scale * weights[m] to the sum of sources[m], m < n, in that order. A source seen
     // before gets its term added to its sum; a new one starts its sum at the term itself (not
     // 0 + term, which would turn -0.0 into +0.0).
-    void addScaled(const int* sources, const double* weights, int n, double scale) {
+    // Weights of a float table widen to double exactly.
+    template <class Weight>
+    void addScaled(const int* sources, const Weight* weights, int n, double scale) {
         add([sources](int m) { return sources[m]; }, weights, n, scale);
     }
     // The same with source m at patch[corners[m]] (a templated stencil, regular_patches.h).
@@ -47,15 +49,15 @@ public:
 
 private:
     // Raw pointers in locals: the stores cannot alias the row's own members.
-    template <class Source>
-    void add(Source source, const double* weights, int n, double scale) {
+    template <class Source, class Weight>
+    void add(Source source, const Weight* weights, int n, double scale) {
         int* slot = slot_.data();
         int* indices = indices_.data();
         double* sums = weights_.data();
         int size = size_;
         for (int m = 0; m < n; ++m) {
             const int v = source(m);
-            const double term = scale * weights[m];
+            const double term = scale * double(weights[m]);
             const int at = slot[v];
             if (at < 0) {
                 slot[v] = size;

@@ -53,6 +53,10 @@ StencilTableD composeStencils(const StencilTableD& outer, const StencilTableD& i
                               std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& inner,
                               std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
+// An inner float table likewise: as over its toDoubleTable(), bitwise (level 2 over level 1's
+// stored table).
+StencilTableD composeStencils(const StencilTable& outer, const StencilTable& inner,
+                              std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 
 // The same composition stored as float: bitwise toFloatTable(composeStencils(outer, inner,
 // maxBytes, templated)) with nothing left out, refused at the same point, without the double
@@ -60,6 +64,8 @@ StencilTableD composeStencils(const StencilTable& outer, const StencilTableD& in
 StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner,
                                     std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner,
+                                    std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
+StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTable& inner,
                                     std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 
 }  // namespace v0
