@@ -168,14 +168,16 @@ const KnownStencils* descend(RegularPatches* patches, CompositionBudget& budget)
     return &known;
 }
 
+// Whether `Levels` stores level 1 as a float table (positions, face-varying channels): the
+// composition then reads it where it is, with no double copy.
+template <class Levels>
+constexpr bool kStoresLevelOne = std::is_same_v<decltype(std::declval<const Levels&>().outer(1)), const StencilTable&>;
+
 // Tables of levels 1..L composed in double, over the control vertices; `patches` (if not null,
 // made for at least L levels) gives the stencils it knows. Those of levels 2..L-1 are left out of
 // their tables and read from their templates by the composition below them; with `leftOut`,
 // level L's too, and *leftOut is what the returned table then lacks (null where it lacks
 // nothing), valid until patches descends twice more.
-template <class Levels>
-constexpr bool kStoresLevelOne = std::is_same_v<decltype(std::declval<const Levels&>().outer(1)), const StencilTable&>;
-
 template <class Levels>
 StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels& levels, RegularPatches* patches,
                                  const KnownStencils** leftOut = nullptr) {
@@ -236,7 +238,7 @@ StencilTable toFloatWithin(const StencilTableD& composed, CompositionBudget& bud
 // as the level's build, for a level-1 factorized table).
 template <class Levels>
 StencilTable levelOneWithin(CompositionBudget& budget, const Levels& levels) {
-    if constexpr (std::is_same_v<decltype(levels.outer(1)), const StencilTable&>) {
+    if constexpr (kStoresLevelOne<Levels>) {
         const StencilTable& stored = levels.outer(1);
         budget.reserve(floatTableBytes(std::size_t(stored.numStencils()), stored.numEntries()));
         return stored;
