@@ -201,10 +201,9 @@ StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels&
     };
     descend(patches, budget);  // level 1 is its own table
     int l = 2;
-    if constexpr (kStoresLevelOne<Levels>) {
-        if (L >= 2) compose(l++, levels.outer(1), 0);  // level 2 straight over level 1's stored table
-    }
-    if (l == 2) {
+    if (kStoresLevelOne<Levels> && L >= 2) {
+        compose(l++, levels.outer(1), 0);  // level 2 straight over level 1's stored table
+    } else {
         budget.reserve(levels.bytes(1));
         composed = levels.table(1);
     }
@@ -270,15 +269,10 @@ StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const L
         return composed;
     };
     StencilTable composed;
-    bool overStored = false;  // level 2 straight over level 1's stored table
-    if constexpr (kStoresLevelOne<Levels>) {
-        if (L == 2) {
-            descend(patches.get(), budget);  // level 1 is its own table
-            composed = compose(levels.outer(1), nullptr, 0);
-            overStored = true;
-        }
-    }
-    if (!overStored) {
+    if (kStoresLevelOne<Levels> && L == 2) {
+        descend(patches.get(), budget);  // level 1 is its own table
+        composed = compose(levels.outer(1), nullptr, 0);  // level 2 straight over its stored table
+    } else {
         const KnownStencils* innerKnown = nullptr;
         const StencilTableD inner = composeLevelTables(L - 1, budget, levels, patches.get(), &innerKnown);
         composed = compose(inner, innerKnown, bytesOf(inner));
