@@ -2,9 +2,10 @@
 // -mavx2 -mfma; kernels/limit_kernel.cpp calls it only where the CPU has both). It computes what
 // the portable loop does (kernels/limit_kernel.h: positions, tangents relative to the first
 // source, the unit normal or the degenerate fallback), faster for two reasons:
-// - one fused multiply-add per output and entry, the weights broadcast straight from memory;
 // - two partial sums per output (even and odd entries), so consecutive entries do not wait on
 //   one another's additions: a stencil's 10-16 entries are otherwise one chain of dependent adds;
+//   an even entry and the odd one after it share a 256-bit register (one fused multiply-add per
+//   output for both), their six weights one load;
 // - normals eight stencils at a time, across the lanes of 256-bit registers (writeNormals8).
 // Only names local to this file and the struct layouts are used: an inline function of a shared
 // header instantiated here would carry AVX2 instructions and could be the copy the linker keeps.
@@ -101,36 +102,45 @@ void writeNormals8(const float* src, int srcStride, const __m128 (&u)[8], const 
 }
 
 // Stencil i's sums: the position, dU and dV written where wanted, the tangents kept for the normal.
+// Entries k and k + 1 go together in 256-bit registers, entry k in lanes 0-3 and k + 1 in lanes
+// 4-7: the low halves are the even entries' sums and the high halves the odd ones', each lane
+// doing what two 128-bit sums per output did (so their bits), with one fused multiply-add per
+// output and pair of entries. The pair's six weights are one load, each weight put in its half by
+// a permute, where broadcasting them took six loads: 1.21-1.24x on the tori's factorized limit
+// tables (docs/limit_evaluation.md).
 inline void accumulate(const float* src, int srcStride, const LimitStencilArrays& t, const LimitOutputs& o, int i,
                        __m128& u, __m128& v) {
     const int first = t.offsets[i], n = t.sizes[i];
     const int* idx = t.indices + first;
     const float* w = t.weights + t.weightOffsets[i];
-    __m128 p0 = _mm_setzero_ps(), u0 = p0, v0 = p0, p1 = p0, u1 = p0, v1 = p0;
-    const __m128 s0 = n > 0 ? loadXyz(src + static_cast<long>(idx[0]) * srcStride) : p0;
+    auto source = [&](int k) { return loadXyz(src + static_cast<long>(idx[k]) * srcStride); };
+    const __m128 s0 = n > 0 ? source(0) : _mm_setzero_ps();
+    const __m256 s00 = pair(s0, s0);
+    // (position, dU, dV) of entry k are w[0..2], of entry k + 1 w[3..5].
+    const __m256i positionWeights = _mm256_setr_epi32(0, 0, 0, 0, 3, 3, 3, 3);
+    const __m256i duWeights = _mm256_setr_epi32(1, 1, 1, 1, 4, 4, 4, 4);
+    const __m256i dvWeights = _mm256_setr_epi32(2, 2, 2, 2, 5, 5, 5, 5);
+    const __m256i sixWeights = _mm256_setr_epi32(-1, -1, -1, -1, -1, -1, 0, 0);  // reads nothing past the pair's
+    __m256 p = _mm256_setzero_ps(), du = p, dv = p;
     int k = 0;
     for (; k + 1 < n; k += 2, w += 6) {
-        const __m128 a = loadXyz(src + static_cast<long>(idx[k]) * srcStride);
-        const __m128 b = loadXyz(src + static_cast<long>(idx[k + 1]) * srcStride);
-        const __m128 da = _mm_sub_ps(a, s0), db = _mm_sub_ps(b, s0);
-        p0 = _mm_fmadd_ps(_mm_broadcast_ss(w + 0), a, p0);
-        u0 = _mm_fmadd_ps(_mm_broadcast_ss(w + 1), da, u0);
-        v0 = _mm_fmadd_ps(_mm_broadcast_ss(w + 2), da, v0);
-        p1 = _mm_fmadd_ps(_mm_broadcast_ss(w + 3), b, p1);
-        u1 = _mm_fmadd_ps(_mm_broadcast_ss(w + 4), db, u1);
-        v1 = _mm_fmadd_ps(_mm_broadcast_ss(w + 5), db, v1);
+        const __m256 x = pair(source(k), source(k + 1)), d = _mm256_sub_ps(x, s00);
+        const __m256 weights = _mm256_maskload_ps(w, sixWeights);
+        p = _mm256_fmadd_ps(_mm256_permutevar8x32_ps(weights, positionWeights), x, p);
+        du = _mm256_fmadd_ps(_mm256_permutevar8x32_ps(weights, duWeights), d, du);
+        dv = _mm256_fmadd_ps(_mm256_permutevar8x32_ps(weights, dvWeights), d, dv);
     }
-    if (k < n) {
-        const __m128 a = loadXyz(src + static_cast<long>(idx[k]) * srcStride);
-        const __m128 da = _mm_sub_ps(a, s0);
+    __m128 p0 = _mm256_castps256_ps128(p), u0 = _mm256_castps256_ps128(du), v0 = _mm256_castps256_ps128(dv);
+    if (k < n) {  // an odd last entry, with the even ones
+        const __m128 a = source(k), da = _mm_sub_ps(a, s0);
         p0 = _mm_fmadd_ps(_mm_broadcast_ss(w + 0), a, p0);
         u0 = _mm_fmadd_ps(_mm_broadcast_ss(w + 1), da, u0);
         v0 = _mm_fmadd_ps(_mm_broadcast_ss(w + 2), da, v0);
     }
-    const __m128 p = _mm_add_ps(p0, p1);
-    u = _mm_add_ps(u0, u1);
-    v = _mm_add_ps(v0, v1);
-    if (o.position.data) storeXyz(o.position.data + static_cast<long>(i) * o.position.stride, p);
+    const __m128 position = _mm_add_ps(p0, _mm256_extractf128_ps(p, 1));
+    u = _mm_add_ps(u0, _mm256_extractf128_ps(du, 1));
+    v = _mm_add_ps(v0, _mm256_extractf128_ps(dv, 1));
+    if (o.position.data) storeXyz(o.position.data + static_cast<long>(i) * o.position.stride, position);
     if (o.du.data) storeXyz(o.du.data + static_cast<long>(i) * o.du.stride, u);
     if (o.dv.data) storeXyz(o.dv.data + static_cast<long>(i) * o.dv.stride, v);
 }
