@@ -19,9 +19,9 @@ namespace kernels {
 namespace {
 
 // x, y, z of an element that is only 4-byte aligned; lane 3 is 0. One masked load, which reads
-// nothing past z (a masked-out lane never faults), as the stencil kernel's: the two loads and a
-// shuffle it replaced made the factorized limit tables of the 100² tori at level 3 1.05-1.12x
-// slower (the same bits; docs/limit_evaluation.md).
+// nothing past z (a masked-out lane never faults), as the stencil kernel's: 1.05-1.12x faster on
+// the 100² tori's factorized limit tables at level 3 than the two loads and a shuffle it replaced
+// (the same bits; docs/limit_evaluation.md).
 inline __m128 loadXyz(const float* p) { return _mm_maskload_ps(p, _mm_setr_epi32(-1, -1, -1, 0)); }
 
 inline void storeXyz(float* d, __m128 v) {
@@ -106,7 +106,7 @@ void writeNormals8(const float* src, int srcStride, const __m128 (&u)[8], const 
 // 4-7: the low halves are the even entries' sums and the high halves the odd ones', each lane
 // doing what two 128-bit sums per output did (so their bits), with one fused multiply-add per
 // output and pair of entries. The pair's six weights are one load, each weight put in its half by
-// a permute, where broadcasting them took six loads: 1.21-1.24x on the tori's factorized limit
+// a permute, where broadcasting them took six loads: 1.23-1.25x on the tori's factorized limit
 // tables (docs/limit_evaluation.md).
 inline void accumulate(const float* src, int srcStride, const LimitStencilArrays& t, const LimitOutputs& o, int i,
                        __m128& u, __m128& v) {
@@ -115,7 +115,7 @@ inline void accumulate(const float* src, int srcStride, const LimitStencilArrays
     const float* w = t.weights + t.weightOffsets[i];
     auto source = [&](int k) { return loadXyz(src + static_cast<long>(idx[k]) * srcStride); };
     const __m128 s0 = n > 0 ? source(0) : _mm_setzero_ps();
-    const __m256 s00 = pair(s0, s0);
+    const __m256 s00 = pair(s0, s0);  // the first source in both halves
     // (position, dU, dV) of entry k are w[0..2], of entry k + 1 w[3..5].
     const __m256i positionWeights = _mm256_setr_epi32(0, 0, 0, 0, 3, 3, 3, 3);
     const __m256i duWeights = _mm256_setr_epi32(1, 1, 1, 1, 4, 4, 4, 4);

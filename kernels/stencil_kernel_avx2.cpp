@@ -5,13 +5,13 @@
 // - an element is one 128-bit register (x, y, z and a zero or the padding's w), the weight
 //   broadcast straight from the pool, one fused multiply-add per entry for all components;
 // - two partial sums (even and odd entries), so consecutive entries do not wait on one another;
-// - inside a run, two stencils at a time in the two halves of a 256-bit register, one fused
-//   multiply-add for both, each half doing exactly what a stencil alone does;
 // - stencils taken in runs that share one pooled weight sequence (after a level or two nearly
 //   every stencil is one of a handful of regular masks, in long runs: face points, then edge
 //   points, then vertex points): the run's weights sit in registers, and the loop is unrolled
 //   to the mask sizes of 3 to 12 entries, so a run costs one branch. Given a StencilRuns' run
-//   list, the loop reads neither offsets nor weightOffsets inside its runs.
+//   list, the loop reads neither offsets nor weightOffsets inside its runs;
+// - inside a run, two stencils at a time in the two halves of a 256-bit register, one fused
+//   multiply-add for both, each half doing exactly what a stencil alone does.
 // Width 3 and width 4 do the same float operations on lanes 0-2, so padded positions give the
 // same bits as packed ones. Only names local to this file and the struct layouts are used: an
 // inline function of a shared header instantiated here would carry AVX2 instructions and could
