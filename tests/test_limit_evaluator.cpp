@@ -1,9 +1,10 @@
 // EvalLimitStencils on CpuEvaluator and TbbEvaluator: against the plain reference loop over the
 // table (the portable kernel bitwise in float; every path within float rounding of the double
-// loop; the 3-float AVX2 + FMA loop, where the CPU runs it, rounds differently), any subset of outputs
-// with padded layouts and widths 1-7, unit normals equal to normalize(dU x dV), the degenerate
-// fallback (the level's area-weighted face normal, or (0, 0, 0) without a MeshNormalTable), TBB
-// bitwise equal to CPU in arenas of 1 and 2 threads, and the same argument checks on both.
+// loop; the 3-float AVX2 + FMA loop, where the CPU runs it, bitwise its documented order of fused
+// multiply-adds), any subset of outputs with padded layouts and widths 1-7, unit normals equal to
+// normalize(dU x dV), the degenerate fallback (the level's area-weighted face normal, or (0, 0, 0)
+// without a MeshNormalTable), TBB bitwise equal to CPU in arenas of 1 and 2 threads, and the same
+// argument checks on both.
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
@@ -122,6 +123,42 @@ TEST(LimitEvaluator, MatchesTheReferenceLoopForEveryWidthAndOutputSubset) {
                         ASSERT_NEAR(o.data[k][f], (*exact[k])[i * width + c], 1e-4);
                     }
                 }
+            }
+        }
+    }
+}
+
+// The 3-float AVX2 + FMA loop's position and tangents, rebuilt in its documented order
+// (kernels/limit_kernel_avx2.cpp): per output two sums, the even entries' and the odd ones', one fused multiply-add per entry, the tangents over the source
+// minus the stencil's first source, the even sum plus the odd one at the end. Bit for bit: the
+// loop takes an entry and the next together in one register, and each half must still do these
+// operations. Skipped where the CPU does not run that loop.
+TEST(LimitEvaluator, TheAvx2LoopAddsInItsDocumentedOrder) {
+    if (!kernels::limitKernelUsesAvx2()) GTEST_SKIP() << "the CPU runs the portable loop";
+    const int numSources = 400, numStencils = 2500;
+    const LimitStencilTable t = randomLimitTable(numStencils, numSources, 17);
+    const std::vector<float> src = randomSource(kPacked, numSources, 19);
+    Outputs o = makeOutputs(3, numStencils);
+    const bool want[4] = {true, true, true, false};
+    evalOn(Host::Cpu, src, kPacked, o, want, t, nullptr);
+    for (int i = 0; i < numStencils; ++i) {
+        const int n = t.sizes[i];
+        const int* idx = t.indices.data() + t.offsets[i];
+        const float* w = t.weights.data() + t.weightOffsets[i];
+        for (int c = 0; c < 3; ++c) {
+            const float first = n > 0 ? src[3 * std::size_t(idx[0]) + c] : 0.0f;
+            float sums[3][2] = {{0.0f, 0.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}};  // [output][even, odd]
+            for (int k = 0; k < n; ++k) {
+                const float x = src[3 * std::size_t(idx[k]) + c], d = x - first;
+                const int half = k % 2;  // an odd count's last entry is even: with the even ones
+                sums[0][half] = std::fma(w[3 * k + 0], x, sums[0][half]);
+                sums[1][half] = std::fma(w[3 * k + 1], d, sums[1][half]);
+                sums[2][half] = std::fma(w[3 * k + 2], d, sums[2][half]);
+            }
+            for (int out = 0; out < 3; ++out) {
+                const float expected = sums[out][0] + sums[out][1];
+                ASSERT_EQ(std::memcmp(element(o, out, i) + c, &expected, sizeof(float)), 0)
+                    << "stencil " << i << " (" << n << " entries) output " << out << " component " << c;
             }
         }
     }
