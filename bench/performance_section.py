@@ -425,9 +425,10 @@ def case_tables(r):
     lines += ["", "Build, topology and tables included (quadtri: `Refiner` + `refineUniform`, oneTBB limited by"
               " `tbb::global_control` for 1t; OpenSubdiv: `TopologyRefiner` + `RefineUniform` + `StencilTableFactory`):", ""]
     lines += build_table(r)
-    lines += ["", "Factorized build, topology and the last level's table over the control vertices (quadtri: the"
-              " same and `factorizedStencils(L)`; OpenSubdiv: its factory with `factorizeIntermediateLevels`,"
-              " serial); last column: quadtri's factorized build over its per-level build, both on 1 thread:", ""]
+    lines += ["", "Factorized build, topology and the last level's table over the control vertices (quadtri:"
+              " `refineUniform` without per-level tables, `LevelTables::None`, and `factorizedStencils(L)`;"
+              " OpenSubdiv: its factory with `factorizeIntermediateLevels`, serial, no intermediate levels kept);"
+              " last column: quadtri's factorized build over its per-level build, both on 1 thread:", ""]
     lines += factorized_build_table(r)
     lines += ["", "Memory: tables by count; peak is the most memory resident above what was resident when the"
               " case's untimed first run began (build with its transient arrays, tables, the 3-float level buffers;"

@@ -52,14 +52,14 @@ QuadtriCase::QuadtriCase(const ControlMesh& mesh, Scheme scheme, int level, bool
 
 QuadtriCase::~QuadtriCase() = default;
 
-std::unique_ptr<Refiner> QuadtriCase::build() const {
+std::unique_ptr<Refiner> QuadtriCase::build(LevelTables tables) const {
     auto refiner = std::make_unique<Refiner>(mesh_.descriptor(), options_);
-    refiner->refineUniform(level_);
+    refiner->refineUniform(level_, TopologyDetail::FacesOnly, tables);
     return refiner;
 }
 
 QuadtriCase::FactorizedBuild QuadtriCase::buildFactorized() const {
-    FactorizedBuild b{build(), {}};
+    FactorizedBuild b{build(LevelTables::None), {}};
     b.table = b.refiner->factorizedStencils(level_);
     return b;
 }

@@ -37,8 +37,11 @@ public:
     QuadtriFigures measure(int reps);
 
 private:
-    std::unique_ptr<Refiner> build() const;
-    // build() and the last level's factorized table, as OpenSubdiv's factorized factory builds it.
+    // The topology of every level, with the per-level tables unless `tables` says None.
+    std::unique_ptr<Refiner> build(LevelTables tables = LevelTables::Build) const;
+    // The topology and the last level's factorized table, without per-level tables (the factorized
+    // build makes those only where a stencil reads them), as OpenSubdiv's factorized factory
+    // builds it.
     struct FactorizedBuild {
         std::unique_ptr<Refiner> refiner;
         StencilTable table;

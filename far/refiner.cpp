@@ -1,6 +1,7 @@
 #include <quadtri/far/refiner.h>
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -50,7 +51,8 @@ std::size_t Refiner::estimateLevelBytes(int L) const {
 std::size_t Refiner::bytes() const {
     std::size_t total = 0;
     for (const Topology& t : levels_) total += bytesOf(t);
-    for (const StencilTable& t : levelTables_) total += t.bytes();
+    for (const std::optional<StencilTable>& t : levelTables_)
+        if (t) total += t->bytes();
     for (const auto& c : fvar_) total += c->bytes();
     return total;
 }
@@ -72,7 +74,26 @@ void Refiner::completeLevel(int L) {
     detail_[L] = TopologyDetail::Full;
 }
 
-void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
+const StencilTable& Refiner::levelStencils(int L) const {
+    const std::optional<StencilTable>& table = levelTables_.at(std::size_t(L) - 1);
+    if (!table)
+        throw std::logic_error("level " + std::to_string(L) + " was refined without its per-level table " +
+                               "(LevelTables::None): refineUniform(" + std::to_string(L) + ") builds it");
+    return *table;
+}
+
+void Refiner::completeTable(int L) {
+    if (levelTables_[std::size_t(L) - 1]) return;
+    const std::size_t estimate = estimateLevelBytes(L), held = bytes();  // the level's bound, its topology included
+    if (held > options_.memoryBudgetBytes || estimate > options_.memoryBudgetBytes - held)
+        throw MemoryBudgetError("the stencil table of level " + std::to_string(L), held + estimate, held,
+                                options_.memoryBudgetBytes);
+    const Topology& parent = levels_[std::size_t(L) - 1];  // below the last level: full
+    levelTables_[std::size_t(L) - 1] = buildLevelStencils<StencilTable>(
+        parent, numberChildren(parent, rulesOf(options_.scheme).triangleSplit()), options_);
+}
+
+void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel, LevelTables tables) {
     if (maxLevel < 0) throw TopologyError("refinement level " + std::to_string(maxLevel) + " is negative");
     while (this->maxLevel() < maxLevel) {
         const int L = this->maxLevel() + 1;
@@ -86,15 +107,20 @@ void Refiner::refineUniform(int maxLevel, TopologyDetail lastLevel) {
         const ChildNumbering numbering = numberChildren(parent, rulesOf(options_.scheme).triangleSplit());
         const TopologyDetail detail = L == maxLevel ? lastLevel : TopologyDetail::Full;
         // Both read only the parent level: build them side by side.
-        StencilTable table;
+        std::optional<StencilTable> table;
         Topology child;
-        tbb::parallel_invoke([&] { table = buildLevelStencils<StencilTable>(parent, numbering, options_); },
-                             [&] { child = refineTopology(parent, numbering, options_.creaseMethod, detail); });
+        if (tables == LevelTables::Build)
+            tbb::parallel_invoke([&] { table = buildLevelStencils<StencilTable>(parent, numbering, options_); },
+                                 [&] { child = refineTopology(parent, numbering, options_.creaseMethod, detail); });
+        else
+            child = refineTopology(parent, numbering, options_.creaseMethod, detail);
         levelTables_.push_back(std::move(table));
         levels_.push_back(std::move(child));
         detail_.push_back(detail);
         for (const auto& c : fvar_) c->refine(levels_[L - 1], levels_[L], options_);
     }
+    if (tables == LevelTables::Build)
+        for (int L = 1; L <= maxLevel; ++L) completeTable(L);
     if (lastLevel == TopologyDetail::Full) completeLevel(maxLevel);
 }
 
@@ -121,27 +147,80 @@ private:
     std::size_t held_, budget_, used_ = 0;  // used: bytes of the double tables alive at this point
 };
 
-// The per-level tables a composition reads: table(l) makes level l's over level l-1 in double,
-// outer(l) is level l's table as the composition reads it (the stored float table, read as its
-// double copy would be, where there is one), and bytes(l) is what that double copy takes,
-// reserved before level l is composed whether or not it is made, so that what the budget
-// refuses does not depend on which way the table is read.
+// The per-level tables a composition reads: table(l, budget) makes level l's over level l-1 in
+// double; outer(l, known, budget) is level l's table as the composition of level l reads it,
+// `known` its templated stencils (the stored float table, read as its double copy would be, where
+// there is one); levelOneUnder(known, budget) is level 1's as level 2's composition reads it
+// (`known`: level 2's templated stencils); bytes(l) is what level l's double copy takes, reserved
+// before level l is composed whether or not it is made, so that what the budget refuses does not
+// depend on which way the table is read.
 struct PositionLevels {
+    explicit PositionLevels(const Refiner& r) : refiner(r) {}
     const Refiner& refiner;
     // The children of regular control faces are written from templates (regular_patches.h).
     std::unique_ptr<RegularPatches> patches(int L) const {
         return L >= 2 ? std::make_unique<RegularPatches>(refiner, L) : nullptr;
     }
-    StencilTableD table(int l) const { return toDoubleTable(refiner.levelStencils(l)); }
-    const StencilTable& outer(int l) const { return refiner.levelStencils(l); }
-    std::size_t bytes(int l) const { return doubleBytes(refiner.levelStencils(l)); }
+    StencilTableD table(int l, CompositionBudget& budget) const {
+        const StencilTable& levelTable = outer(l, nullptr, budget);
+        if (!refiner.hasLevelStencils(l)) budget.reserve(doubleBytes(levelTable));  // bytes(l) counted none for it
+        return toDoubleTable(levelTable);
+    }
+    // A level refined without its table (LevelTables::None) has it made here for this
+    // composition, with the rows that are read only: the stencils of level l that no template
+    // gives; under level 2, the level-1 stencils that those of level 2 read.
+    const StencilTable& outer(int l, const KnownStencils* known, CompositionBudget& budget) const {
+        if (refiner.hasLevelStencils(l)) return refiner.levelStencils(l);
+        if (!known) return made(l, nullptr, budget);
+        std::vector<std::uint8_t> wanted(std::size_t(refiner.faces(l).numVertices()));
+        for (std::size_t i = 0; i < wanted.size(); ++i) wanted[i] = known->face[i] < 0;
+        return made(l, &wanted, budget);
+    }
+    const StencilTable& levelOneUnder(const KnownStencils* known, CompositionBudget& budget) const {
+        if (refiner.hasLevelStencils(1)) return refiner.levelStencils(1);
+        if (!known) return made(1, nullptr, budget);
+        const StencilTable& two = outer(2, known, budget);  // kept from level 2's own read
+        std::vector<std::uint8_t> wanted(std::size_t(refiner.faces(1).numVertices()));
+        for (int i = 0; i < two.numStencils(); ++i)
+            if (known->face[i] < 0)
+                for (int k = two.offsets[i]; k < two.offsets[i + 1]; ++k) wanted[std::size_t(two.indices[k])] = 1;
+        return made(1, &wanted, budget);
+    }
+    std::size_t bytes(int l) const { return refiner.hasLevelStencils(l) ? doubleBytes(refiner.levelStencils(l)) : 0; }
+
+private:
+    // Level l's table with the rows `wanted` flags (all where null), made once per composition and
+    // kept until it ends, its bytes reserved in `budget`. Where no row is wanted, a table of the
+    // level's stencils with no entries (read for its stencil count only).
+    const StencilTable& made(int l, const std::vector<std::uint8_t>* wanted, CompositionBudget& budget) const {
+        const auto found = made_.find(l);
+        if (found != made_.end()) return found->second;
+        StencilTable& table = made_[l];
+        const Topology& parent = refiner.level(l - 1);  // below the last level: full
+        if (wanted && std::find(wanted->begin(), wanted->end(), 1) == wanted->end()) {
+            table.numSourceVertices = parent.numVertices;
+            table.offsets.assign(wanted->size() + 1, 0);
+            table.weightOffsets.assign(wanted->size(), 0);
+        } else {
+            const std::size_t estimate = refiner.estimateLevelBytes(l);  // the level's bound, its topology included
+            budget.reserve(estimate);
+            table = buildLevelStencils<StencilTable>(
+                parent, numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit()), refiner.options(),
+                nullptr, wanted);
+            budget.release(estimate);
+        }
+        budget.reserve(table.bytes());
+        return table;
+    }
+    mutable std::map<int, StencilTable> made_;  // by level (a map: references to it stay valid)
 };
 
 struct ChannelLevels {
     const FVarChannelRefinement& channel;
     std::unique_ptr<RegularPatches> patches(int) const { return nullptr; }
-    StencilTableD table(int l) const { return toDoubleTable(channel.levelStencils(l)); }
-    const StencilTable& outer(int l) const { return channel.levelStencils(l); }
+    StencilTableD table(int l, CompositionBudget&) const { return toDoubleTable(channel.levelStencils(l)); }
+    const StencilTable& outer(int l, const KnownStencils*, CompositionBudget&) const { return channel.levelStencils(l); }
+    const StencilTable& levelOneUnder(const KnownStencils*, CompositionBudget&) const { return channel.levelStencils(1); }
     std::size_t bytes(int l) const { return doubleBytes(channel.levelStencils(l)); }
 };
 
@@ -154,7 +233,9 @@ struct VaryingLevels {
         return numberChildren(parent, rulesOf(refiner.options().scheme).triangleSplit());
     }
     StencilTableD table(int l) const { return buildVaryingStencils(refiner.level(l - 1), numbering(l)); }
-    StencilTableD outer(int l) const { return table(l); }
+    StencilTableD table(int l, CompositionBudget&) const { return table(l); }
+    StencilTableD outer(int l, const KnownStencils*, CompositionBudget&) const { return table(l); }
+    StencilTableD levelOneUnder(const KnownStencils*, CompositionBudget&) const { return table(1); }
     std::size_t bytes(int l) const { return varyingStencilBytes(refiner.level(l - 1), numbering(l)); }
 };
 
@@ -171,7 +252,9 @@ const KnownStencils* descend(RegularPatches* patches, CompositionBudget& budget)
 // Whether `Levels` stores level 1 as a float table (positions, face-varying channels): the
 // composition then reads it where it is, with no double copy.
 template <class Levels>
-constexpr bool kStoresLevelOne = std::is_same_v<decltype(std::declval<const Levels&>().outer(1)), const StencilTable&>;
+constexpr bool kStoresLevelOne =
+    std::is_same_v<decltype(std::declval<const Levels&>().outer(1, nullptr, std::declval<CompositionBudget&>())),
+                   const StencilTable&>;
 
 // Tables of levels 1..L composed in double, over the control vertices; `patches` (if not null,
 // made for at least L levels) gives the stencils it knows. Those of levels 2..L-1 are left out of
@@ -183,12 +266,14 @@ StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels&
                                  const KnownStencils** leftOut = nullptr) {
     StencilTableD composed;
     const KnownStencils* innerKnown = nullptr;  // left out of `composed`
-    // Level l over `inner` (of innerBytes in the budget: 0 for a table the Refiner holds).
-    auto compose = [&](int l, const auto& inner, std::size_t innerBytes) {
+    // Level l over innerOf(level l's templated stencils) (of innerBytes in the budget: 0 for a
+    // table the Refiner holds).
+    auto compose = [&](int l, auto innerOf, std::size_t innerBytes) {
         budget.reserve(levels.bytes(l));
-        const auto& outer = levels.outer(l);  // a reference, or a table kept for this step
         try {
             const KnownStencils* known = descend(patches, budget);
+            const auto& outer = levels.outer(l, known, budget);  // a reference, or a table kept for this step
+            const auto& inner = innerOf(known);
             const bool leaveOut = known && (l < L || leftOut);
             StencilTableD next = composeStencils(outer, inner, budget.left(), {known, innerKnown, leaveOut});
             budget.release(levels.bytes(l) + innerBytes);
@@ -202,12 +287,14 @@ StencilTableD composeLevelTables(int L, CompositionBudget& budget, const Levels&
     descend(patches, budget);  // level 1 is its own table
     int l = 2;
     if (kStoresLevelOne<Levels> && L >= 2) {
-        compose(l++, levels.outer(1), 0);  // level 2 straight over level 1's stored table
+        // Level 2 straight over level 1's stored table.
+        compose(l++, [&](const KnownStencils* known) -> decltype(auto) { return levels.levelOneUnder(known, budget); }, 0);
     } else {
         budget.reserve(levels.bytes(1));
-        composed = levels.table(1);
+        composed = levels.table(1, budget);
     }
-    for (; l <= L; ++l) compose(l, composed, bytesOf(composed));
+    for (; l <= L; ++l)
+        compose(l, [&](const KnownStencils*) -> const StencilTableD& { return composed; }, bytesOf(composed));
     if (leftOut) *leftOut = innerKnown;
     return composed;
 }
@@ -238,7 +325,7 @@ StencilTable toFloatWithin(const StencilTableD& composed, CompositionBudget& bud
 template <class Levels>
 StencilTable levelOneWithin(CompositionBudget& budget, const Levels& levels) {
     if constexpr (kStoresLevelOne<Levels>) {
-        const StencilTable& stored = levels.outer(1);
+        const StencilTable& stored = levels.outer(1, nullptr, budget);
         budget.reserve(floatTableBytes(std::size_t(stored.numStencils()), stored.numEntries()));
         return stored;
     } else {
@@ -255,13 +342,15 @@ StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const L
     if (L == 1) return levelOneWithin(budget, levels);
     const std::unique_ptr<RegularPatches> patches = levels.patches(L);
     if (patches) budget.reserve(patches->bytes());
-    // Level L over `inner` (of innerBytes in the budget: 0 for a table the Refiner holds).
-    auto compose = [&](const auto& inner, const KnownStencils* innerKnown, std::size_t innerBytes) {
+    // Level L over innerOf(level L's templated stencils) (of innerBytes in the budget: 0 for a
+    // table the Refiner holds).
+    auto compose = [&](auto innerOf, const KnownStencils* innerKnown, std::size_t innerBytes) {
         budget.reserve(levels.bytes(L));
         StencilTable composed;
         try {
             const KnownStencils* known = descend(patches.get(), budget);
-            composed = composeStencilsToFloat(levels.outer(L), inner, budget.left(), {known, innerKnown});
+            const auto& outer = levels.outer(L, known, budget);  // before the inner table: levelOneUnder reads it
+            composed = composeStencilsToFloat(outer, innerOf(known), budget.left(), {known, innerKnown});
         } catch (const std::length_error&) {
             throw budget.refuse(budget.budget() + 1);
         }
@@ -271,11 +360,14 @@ StencilTable composeLevelTablesToFloat(int L, CompositionBudget& budget, const L
     StencilTable composed;
     if (kStoresLevelOne<Levels> && L == 2) {
         descend(patches.get(), budget);  // level 1 is its own table
-        composed = compose(levels.outer(1), nullptr, 0);  // level 2 straight over its stored table
+        // Level 2 straight over level 1's stored table.
+        composed = compose(
+            [&](const KnownStencils* known) -> decltype(auto) { return levels.levelOneUnder(known, budget); }, nullptr, 0);
     } else {
         const KnownStencils* innerKnown = nullptr;
         const StencilTableD inner = composeLevelTables(L - 1, budget, levels, patches.get(), &innerKnown);
-        composed = compose(inner, innerKnown, bytesOf(inner));
+        composed = compose([&](const KnownStencils*) -> const StencilTableD& { return inner; }, innerKnown,
+                           bytesOf(inner));
     }
     budget.reserve(doubleBytes(composed));
     budget.reserve(floatTableBytes(std::size_t(composed.numStencils()), composed.numEntries()));
@@ -368,7 +460,7 @@ StencilTable Refiner::factorizedStencils(int L) const {
     checkRefinedLevel("factorized stencils", L);
     CompositionBudget budget("the factorized stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
-    return composeLevelTablesToFloat(L, budget, PositionLevels{*this});
+    return composeLevelTablesToFloat(L, budget, PositionLevels(*this));
 }
 
 void Refiner::checkRefinedLevel(const char* what, int L) const {
@@ -454,7 +546,7 @@ LimitStencilTable Refiner::factorizedLimitStencils(int L) const {
     CompositionBudget budget("the factorized limit stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
     return composeLimitWithin(
-        budget, [&] { return limitStencilsOf(*this, L, budget); }, [&] { return composeLevelTables(L, budget, PositionLevels{*this}); });
+        budget, [&] { return limitStencilsOf(*this, L, budget); }, [&] { return composeLevelTables(L, budget, PositionLevels(*this)); });
 }
 
 LimitStencilTable Refiner::fvarLimitStencils(int c, int L) const {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <quadtri/far/level_faces.h>
@@ -15,6 +16,17 @@ namespace quadtri {
 inline namespace v0 {
 
 class FVarChannelRefinement;
+
+// Whether refineUniform builds the per-level stencil table of each level it refines
+// (levelStencils). A caller that reads only tables over the control vertices (factorizedStencils,
+// factorizedLimitStencils) asks for None: those compose from the regular faces' templates and
+// make, for the call alone, the per-level tables of the levels where a stencil needs one
+// (docs/architecture.md, "Factorized tables"). OpenSubdiv's StencilTableFactory likewise builds
+// a factorized table without the per-level ones.
+enum class LevelTables {
+    Build,  // every refined level keeps its table: levelStencils(L) for any L
+    None,   // the levels refined by this call keep none (face-varying channels still keep theirs)
+};
 
 class Refiner {
 public:
@@ -30,8 +42,11 @@ public:
     // (bytes()) plus a level's estimated topology, tables and output exceed
     // options.memoryBudgetBytes; the levels built before stay usable. The last level holds only its faces
     // unless `lastLevel` asks for Full (as OpenSubdiv's fullTopologyInLastLevel); refining
-    // further, or asking again with Full, completes it.
-    void refineUniform(int maxLevel, TopologyDetail lastLevel = TopologyDetail::FacesOnly);
+    // further, or asking again with Full, completes it. With LevelTables::None the levels it
+    // refines get no per-level table; asking again with Build (the default) builds the tables
+    // that levels 1..maxLevel lack, each within the budget as a level is.
+    void refineUniform(int maxLevel, TopologyDetail lastLevel = TopologyDetail::FacesOnly,
+                       LevelTables tables = LevelTables::Build);
 
     int maxLevel() const { return int(levels_.size()) - 1; }
     // What the descriptor had that was accepted with a change, each naming its item (a crease on
@@ -54,8 +69,12 @@ public:
     // refineUniform(L, TopologyDetail::Full).
     const Topology& level(int L) const;
 
-    // Stencils of level L >= 1 over the vertices of level L-1, one per vertex of level L.
-    const StencilTable& levelStencils(int L) const { return levelTables_.at(L - 1); }
+    // Stencils of level L >= 1 over the vertices of level L-1, one per vertex of level L. Throws
+    // std::out_of_range for a level not refined, std::logic_error for one refined with
+    // LevelTables::None (refineUniform(L) builds its table).
+    const StencilTable& levelStencils(int L) const;
+    // Whether level L (1 <= L <= maxLevel()) has its per-level table.
+    bool hasLevelStencils(int L) const { return levelTables_.at(std::size_t(L) - 1).has_value(); }
 
     // Stencils of level L >= 1 over the control (level 0) vertices: the per-level tables
     // composed, accumulated in double precision. Throws TopologyError when composing them, with
@@ -121,12 +140,14 @@ public:
     // (a looser bound while level L-1 holds its faces only).
     std::size_t estimateLevelBytes(int L) const;
 
-    // Bytes the Refiner holds: every level's topology and per-level table, with its channels'.
+    // Bytes the Refiner holds: every level's topology and per-level table (those built), with its
+    // channels'.
     std::size_t bytes() const;
 
 private:
     void checkRefinedLevel(const char* what, int L) const;  // TopologyError unless 1 <= L <= maxLevel()
     void completeLevel(int L);  // rebuilds a faces-only level in full
+    void completeTable(int L);  // builds level L's per-level table where it has none, within the budget
     void checkLimitLevel(const char* what, int L) const;  // TopologyError unless 0 <= L <= maxLevel()
     const FVarChannelRefinement& channel(int c) const;
 
@@ -134,7 +155,7 @@ private:
     std::vector<TopologyDiagnostic> warnings_;
     std::vector<Topology> levels_;
     std::vector<TopologyDetail> detail_;  // per level
-    std::vector<StencilTable> levelTables_;
+    std::vector<std::optional<StencilTable>> levelTables_;  // per level 1..maxLevel(); none with LevelTables::None
     std::vector<std::unique_ptr<FVarChannelRefinement>> fvar_;
 };
 

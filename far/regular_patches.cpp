@@ -299,7 +299,7 @@ const KnownStencils& RegularPatches::descend() {
     std::vector<int>& face = face_[l % 2];
     std::vector<int>& position = position_[l % 2];
     KnownStencils& known = known_[l % 2];
-    face.assign(std::size_t(refiner_.levelStencils(l).numStencils()), -1);
+    face.assign(std::size_t(refiner_.faces(l).numVertices()), -1);
     position.resize(face.size());
     descendCells(refiner_, l - 1, cells_, kinds_, l < maxLevel_, [&](std::size_t r, int p, int v) {
         face[std::size_t(v)] = regular_[r];

@@ -43,6 +43,7 @@ struct LevelInputs {
     // scheme whose masks sharpness does not change.
     bool smooth;
     std::unique_ptr<SchemeLevel> prepared;  // what the scheme builds once per level, or null
+    const std::uint8_t* wanted;             // per child: whether its mask is built (null: all)
 };
 
 // One worker's state: the accumulator and the scheme's masks hold per-mask scratch, so each
@@ -116,6 +117,10 @@ void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, 
     constexpr int kMaxGathered = 2 * RegularMasks::kMaxValence + 1;
     int gathered[kMaxGathered];  // the first mask of a key's vertices, compared with the rules'
     for (int c = first; c < last; ++c) {
+        if (in.wanted && !in.wanted[c]) {
+            writer.appendEmpty();
+            continue;
+        }
         int n = 0, key = 0;
         if constexpr (kFloat) {
             // Gathered straight into the table, kept there when the key's weights are known.
@@ -163,12 +168,12 @@ constexpr int kMinChildrenPerPart = 32768;
 // into the table, the others into their own tables, appended in order afterwards.
 template <typename Table>
 Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options,
-                         const std::vector<float>* childEdgeSharpness) {
+                         const std::vector<float>* childEdgeSharpness, const std::vector<std::uint8_t>* wanted) {
     const int numChildren = num.numFacePoints + t.numEdges() + t.numVertices;
     const SchemeRules& rules = rulesOf(options.scheme);
     const bool smooth = !rules.usesSharpness() || !hasSharpness(t);
     LevelInputs in{t, num, options, rules, std::vector<int>(num.numFacePoints), {}, {}, smooth,
-                   rules.prepareLevel(t, options)};
+                   rules.prepareLevel(t, options), wanted ? wanted->data() : nullptr};
     for (int f = 0; f < t.numFaces(); ++f)
         if (num.facePoint[f] >= 0) in.faceOfPoint[num.facePoint[f]] = f;
     if (!smooth) {
@@ -221,9 +226,9 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
 }
 
 template StencilTable buildLevelStencils<StencilTable>(const Topology&, const ChildNumbering&, const Options&,
-                                                       const std::vector<float>*);
+                                                       const std::vector<float>*, const std::vector<std::uint8_t>*);
 template StencilTableD buildLevelStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&,
-                                                         const std::vector<float>*);
+                                                         const std::vector<float>*, const std::vector<std::uint8_t>*);
 
 }  // namespace v0
 }  // namespace quadtri

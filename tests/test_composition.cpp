@@ -298,5 +298,57 @@ TEST(Composition, ChannelAndVaryingTablesAsTheReference) {
     }
 }
 
+void expectSame(const LimitStencilTable& got, const LimitStencilTable& want, const std::string& where) {
+    EXPECT_EQ(got.numSourceVertices, want.numSourceVertices) << where;
+    EXPECT_EQ(got.sizes, want.sizes) << where;
+    EXPECT_EQ(got.offsets, want.offsets) << where;
+    EXPECT_EQ(got.indices, want.indices) << where;
+    EXPECT_EQ(got.weightOffsets, want.weightOffsets) << where;
+    EXPECT_TRUE(sameBits(got.weights, want.weights)) << where << ": weight pools differ";
+}
+
+// A Refiner refined without its per-level tables (LevelTables::None) makes the factorized tables
+// of one that keeps them, bit for bit: on regular tori (every stencil templated: no per-level
+// table read), with a crease (templated and composed stencils side by side: the tables of the
+// levels that need them made for the call), on a mixed torus and a high-valence sphere
+// (everything composed). Asked again with Build, it gets the per-level tables the other kept.
+TEST(Composition, FactorizedTablesWithoutLevelTables) {
+    struct Case {
+        bench::ControlMesh mesh;
+        Scheme scheme;
+        bool crease;
+    };
+    const Case cases[] = {
+        {bench::makeTorus(14, bench::TorusFaces::Quads), Scheme::CatmullClark, false},
+        {bench::makeTorus(14, bench::TorusFaces::Triangles), Scheme::Loop, false},
+        {bench::makeTorus(14, bench::TorusFaces::Quads), Scheme::CatmullClark, true},
+        {bench::makeTorus(14, bench::TorusFaces::Mixed), Scheme::SchaeferWarren, false},
+        {bench::makeUvSphere(32, 6, bench::SpherePoles::TriangleFans), Scheme::StamLoop, false},
+    };
+    for (const Case& c : cases) {
+        const TopologyDescriptor desc = c.crease ? withOneCrease(c.mesh.descriptor()) : c.mesh.descriptor();
+        Options options;
+        options.scheme = c.scheme;
+        Refiner kept(desc, options), none(desc, options);
+        kept.refineUniform(3);
+        none.refineUniform(3, TopologyDetail::FacesOnly, LevelTables::None);
+        const std::string where = c.mesh.name + (c.crease ? " with a crease" : "") + " under " + toString(c.scheme);
+        EXPECT_LT(none.bytes(), kept.bytes()) << where;
+        for (int L = 1; L <= 3; ++L) {
+            const std::string at = where + " level " + std::to_string(L);
+            EXPECT_FALSE(none.hasLevelStencils(L)) << at;
+            EXPECT_THROW(none.levelStencils(L), std::logic_error) << at;
+            expectSame(none.factorizedStencils(L), kept.factorizedStencils(L), at + " factorized");
+            expectSame(none.factorizedLimitStencils(L), kept.factorizedLimitStencils(L), at + " factorized limit");
+        }
+        EXPECT_THROW(none.levelStencils(4), std::out_of_range) << where;
+        none.refineUniform(2);  // levels 1 and 2 get their tables, level 3 none yet
+        EXPECT_TRUE(none.hasLevelStencils(2) && !none.hasLevelStencils(3)) << where;
+        none.refineUniform(3);
+        for (int L = 1; L <= 3; ++L) expectSame(none.levelStencils(L), kept.levelStencils(L), where + " level table");
+        EXPECT_EQ(none.bytes(), kept.bytes()) << where;
+    }
+}
+
 }  // namespace
 }  // namespace quadtri::test

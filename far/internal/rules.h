@@ -2,6 +2,9 @@
 // scheme's own masks (far/internal/scheme.h).
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include <quadtri/far/options.h>
 #include "far/internal/refine_topology.h"
 #include <quadtri/far/stencil_table.h>
@@ -20,9 +23,13 @@ inline namespace v0 {
 // `childEdgeSharpness` (parallel to parent.vertEdges), when given, replaces the sharpness the
 // children of each vertex's edges would decay to from the parent's own: a face-varying channel's
 // value mesh takes the mesh's (docs/face_varying.md).
+// `wanted` (one flag per child), when given, limits the masks built to the children flagged; the
+// others get empty stencils. A flagged child's stencil has the indices and weights it has in the
+// whole table (a factorized table composes only the rows it reads: far/refiner.cpp).
 template <typename Table>
 Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering, const Options& options,
-                         const std::vector<float>* childEdgeSharpness = nullptr);
+                         const std::vector<float>* childEdgeSharpness = nullptr,
+                         const std::vector<std::uint8_t>* wanted = nullptr);
 
 }  // namespace v0
 }  // namespace quadtri

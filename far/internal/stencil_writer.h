@@ -40,6 +40,10 @@ public:
         table_.offsets.push_back(int(table_.indices.size()));
         table_.sizes.push_back(acc.flush(table_.indices, table_.weights));
     }
+    void appendEmpty() {
+        table_.offsets.push_back(int(table_.indices.size()));
+        table_.sizes.push_back(0);
+    }
     // Appends the stencils of tables built for the children that follow, in order.
     void append(const std::vector<StencilTableD>& parts) {
         for (const StencilTableD& part : parts) append(part);
@@ -79,6 +83,12 @@ public:
             previousSize_ = n;
         }
         table_.weightOffsets[stencils_] = previousOffset_;
+        table_.offsets[++stencils_] = int(entries_);
+    }
+    // A stencil of no entries (a child whose mask is not wanted).
+    void appendEmpty() {
+        if (emptyOffset_ < 0) emptyOffset_ = pool_.intern(maskWeights_.data(), 0);
+        table_.weightOffsets[stencils_] = emptyOffset_;
         table_.offsets[++stencils_] = int(entries_);
     }
     // Room for n indices after the last stencil, for the next stencil to be gathered in place
@@ -170,6 +180,7 @@ private:
     std::vector<float> maskWeights_;  // the current mask's weights before interning
     int previousOffset_ = -1;         // where the last mask's weights sit in the pool
     int previousSize_ = 0;
+    int emptyOffset_ = -1;  // the empty sequence's place in the pool, once interned
 
     bool sameAsPrevious(int n) const {
         if (previousOffset_ < 0 || n != previousSize_) return false;
