@@ -10,6 +10,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -53,14 +54,24 @@ void reserveFor(std::size_t stencils, std::size_t entries, LimitStencilTableD& t
     reserveFresh(table.weights, 3 * entries);
 }
 
-// Room for every part at once: no copy of what was joined so far.
-void reserveFor(const std::vector<LimitStencilTableD>& parts, LimitStencilTableD& table) {
+// The parts in order, as one table. The first part was reserved for all of them (pages untouched
+// past what it wrote cost nothing), so it is kept and the others are appended to it: only their
+// entries are copied, into fresh pages as many as they fill. Joining into a new table copied the
+// first part as well, which, new pages and all, was a fifth of a factorized limit table's build on
+// two parts.
+LimitStencilTableD joined(std::vector<LimitStencilTableD>& parts) {
     std::size_t stencils = 0, entries = 0;
     for (const LimitStencilTableD& part : parts) {
         stencils += part.sizes.size();
         entries += part.indices.size();
     }
-    reserveFor(stencils, entries, table);
+    LimitStencilTableD table = std::move(parts[0]);
+    reserveFor(stencils, entries, table);  // nothing to do unless the first part's estimate fell short
+    for (std::size_t k = 1; k < parts.size(); ++k) {
+        append(parts[k], table);
+        parts[k] = LimitStencilTableD();
+    }
+    return table;
 }
 
 // Vertices per part below which a level is not split.
@@ -80,10 +91,12 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
         LimitMaskCache cache;
         LimitStencilTableD& part = built[k];
         const int first = split(k), last = split(k + 1);
-        // At most the vertex, its edge neighbours and its faces' opposite corners per stencil.
-        const std::size_t bound = std::size_t(last - first) + (level.vertEdgeOffsets[last] - level.vertEdgeOffsets[first]) +
-                                  (level.vertFaceOffsets[last] - level.vertFaceOffsets[first]);
-        reserveFor(std::size_t(last - first), bound, part);
+        // At most the vertex, its edge neighbours and its faces' opposite corners per stencil; the
+        // first part reserves room for every part (joined).
+        const int until = k == 0 ? n : last;
+        const std::size_t bound = std::size_t(until - first) + (level.vertEdgeOffsets[until] - level.vertEdgeOffsets[first]) +
+                                  (level.vertFaceOffsets[until] - level.vertFaceOffsets[first]);
+        reserveFor(std::size_t(until - first), bound, part);
         for (int v = first; v < last; ++v) {
             orderVertexRing(level, v, starts ? starts->startFace(v) : -1, ring);
             mask.clear();
@@ -91,60 +104,69 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
             appendMask(mask, part);
         }
     });
-    LimitStencilTableD table;
-    if (parts == 1) {
-        table = std::move(built[0]);
-    } else {
-        reserveFor(built, table);
-        for (const LimitStencilTableD& part : built) append(part, table);
-    }
+    LimitStencilTableD table = joined(built);
     table.numSourceVertices = n;
     return table;
 }
 
 namespace {
 
+// Stencil i of limit ∘ inner appended to `indices` and `weights` (three per entry): each limit
+// entry's inner stencil scaled by its weight triple, in entry order, a source's sums in the slot
+// where it was first reached (`slot`: per inner source, -1 or its place past `base`; left all -1).
+template <class Indices, class Weights>
+void composeOneLimit(const LimitStencilTableD& limit, const StencilTableD& inner, int i, std::vector<int>& slot,
+                     Indices& indices, Weights& weights) {
+    const std::size_t start = indices.size();
+    for (int k = 0; k < limit.sizes[i]; ++k) {
+        const int entry = limit.offsets[i] + k, s = limit.indices[entry];
+        const double* w = limit.weights.data() + 3 * std::size_t(entry);
+        for (int j = 0; j < inner.sizes[s]; ++j) {
+            const int c = inner.indices[inner.offsets[s] + j];
+            const double x = inner.weights[inner.offsets[s] + j];
+            if (slot[c] < 0) {
+                slot[c] = int(indices.size() - start);
+                indices.push_back(c);
+                weights.insert(weights.end(), {0.0, 0.0, 0.0});
+            }
+            double* o = weights.data() + 3 * (start + std::size_t(slot[c]));
+            o[0] += w[0] * x;
+            o[1] += w[1] * x;
+            o[2] += w[2] * x;
+        }
+    }
+    for (std::size_t k = start; k < indices.size(); ++k) slot[indices[k]] = -1;
+}
+
+// The entries stencil i of limit ∘ inner can have: its entries' inner stencils added up.
+std::size_t mostEntries(const LimitStencilTableD& limit, const StencilTableD& inner, int i) {
+    std::size_t most = 0;
+    for (int k = 0; k < limit.sizes[i]; ++k) most += std::size_t(inner.sizes[limit.indices[limit.offsets[i] + k]]);
+    return most;
+}
+
 // Stencils [first, last) of limit ∘ inner into `out`; `entries` counts every part's entries so
-// that all of them together stop at `maxEntries`. The arrays are reserved for the inner table's
-// entries per stencil and a quarter more (a limit stencil reads its vertex's ring, whose composed
-// stencils overlap: the demo's limb at level 3 has 14.4 entries a composed limit stencil over
-// 12.6 an inner one), and grow by half before a stencil that might not fit, onto fresh pages
-// each time: growing by doubling behind push_back copied the arrays and faulted each new block
-// in 4 KiB at a time, most of the composition's time.
+// that all of them together stop at `maxEntries`. The arrays are reserved (the first part's for
+// every part's stencils, joined) for the inner table's entries per stencil and a quarter more (a
+// limit stencil reads its vertex's ring, whose composed stencils overlap: the demo's limb at level
+// 3 has 14.4 entries a composed limit stencil over 12.6 an inner one), and grow by half before a
+// stencil that might not fit, onto fresh pages each time: growing by doubling behind push_back
+// copied the arrays and faulted each new block in 4 KiB at a time, most of the composition's time.
 void composeRange(const LimitStencilTableD& limit, const StencilTableD& inner, int first, int last,
                   std::atomic<std::size_t>& entries, std::size_t maxEntries, LimitStencilTableD& out) {
-    std::vector<int> slot(inner.numSourceVertices, -1);  // where a source sits in the current stencil
+    std::vector<int> slot(inner.numSourceVertices, -1);
     const double perStencil = inner.sizes.empty() ? 0.0 : double(inner.indices.size()) / double(inner.sizes.size());
-    reserveFor(std::size_t(last - first),
-               std::min(maxEntries, std::size_t(1.25 * perStencil * double(last - first)) + 16), out);
+    const int reserved = first == 0 ? limit.numStencils() : last - first;
+    reserveFor(std::size_t(reserved), std::min(maxEntries, std::size_t(1.25 * perStencil * double(reserved)) + 16), out);
     for (int i = first; i < last; ++i) {
-        const std::size_t start = out.indices.size();
-        std::size_t most = 0;  // entries stencil i can have: its entries' inner stencils added up
-        for (int k = 0; k < limit.sizes[i]; ++k) most += std::size_t(inner.sizes[limit.indices[limit.offsets[i] + k]]);
+        const std::size_t start = out.indices.size(), most = mostEntries(limit, inner, i);
         if (start + most > out.indices.capacity()) {
             const std::size_t grown = start + most + (start + most) / 2;
             reserveFresh(out.indices, grown);
             reserveFresh(out.weights, 3 * grown);
         }
         out.offsets.push_back(int(start));
-        for (int k = 0; k < limit.sizes[i]; ++k) {
-            const int entry = limit.offsets[i] + k, s = limit.indices[entry];
-            const double* w = limit.weights.data() + 3 * std::size_t(entry);
-            for (int j = 0; j < inner.sizes[s]; ++j) {
-                const int c = inner.indices[inner.offsets[s] + j];
-                const double x = inner.weights[inner.offsets[s] + j];
-                if (slot[c] < 0) {
-                    slot[c] = int(out.indices.size());
-                    out.indices.push_back(c);
-                    out.weights.insert(out.weights.end(), {0.0, 0.0, 0.0});
-                }
-                double* o = out.weights.data() + 3 * std::size_t(slot[c]);
-                o[0] += w[0] * x;
-                o[1] += w[1] * x;
-                o[2] += w[2] * x;
-            }
-        }
-        for (std::size_t k = start; k < out.indices.size(); ++k) slot[out.indices[k]] = -1;
+        composeOneLimit(limit, inner, i, slot, out.indices, out.weights);
         const int size = int(out.indices.size() - start);
         out.sizes.push_back(size);
         if (entries.fetch_add(size) + size > maxEntries) throw std::length_error("composed limit stencils pass their budget");
@@ -166,33 +188,23 @@ LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const S
     std::atomic<std::size_t> entries{0};
     std::vector<LimitStencilTableD> built(parts);
     tbb::parallel_for(0, parts, [&](int k) { composeRange(limit, inner, split(k), split(k + 1), entries, maxEntries, built[k]); });
-    LimitStencilTableD out;
-    if (parts == 1) {
-        out = std::move(built[0]);
-    } else {
-        reserveFor(built, out);
-        for (const LimitStencilTableD& part : built) append(part, out);
-    }
+    LimitStencilTableD out = joined(built);
     out.numSourceVertices = inner.numSourceVertices;
     return out;
 }
 
 namespace {
 
-// Stencil i's entries in ascending source order: its sources into `run`, their weight triples
-// rounded to float into `triples`. The sort is by (source, position in the stencil), so ties
-// (a source listed twice) keep their order and become one entry, weights added in double.
-void sortedEntries(const LimitStencilTableD& table, int i, std::vector<int>& order, std::vector<int>& run,
-                   std::vector<float>& triples) {
-    const int size = table.sizes[i];
-    const int* sources = table.indices.data() + table.offsets[i];
-    const double* weights = table.weights.data() + 3 * std::size_t(table.offsets[i]);
+// A stencil's `size` entries (`sources`, three `weights` each) in ascending source order, appended:
+// its sources to `run`, their weight triples rounded to float to `triples`. The sort is by
+// (source, position in the stencil), so ties (a source listed twice) keep their order and become
+// one entry, weights added in double.
+void sortedEntries(int size, const int* sources, const double* weights, std::vector<int>& order,
+                   std::vector<int>& run, std::vector<float>& triples) {
     order.resize(size);
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(),
               [&](int a, int b) { return sources[a] < sources[b] || (sources[a] == sources[b] && a < b); });
-    run.clear();
-    triples.clear();
     for (int k = 0; k < size;) {
         const int source = sources[order[k]];
         const double* w = weights + 3 * order[k];
@@ -218,11 +230,100 @@ LimitStencilTable toFloatTable(const LimitStencilTableD& table) {
     std::vector<int> order, run;
     std::vector<float> triples;
     for (int i = 0; i < n; ++i) {
-        sortedEntries(table, i, order, run, triples);
+        run.clear();
+        triples.clear();
+        sortedEntries(table.sizes[i], table.indices.data() + table.offsets[i],
+                      table.weights.data() + 3 * std::size_t(table.offsets[i]), order, run, triples);
         const int size = int(run.size());
         out.sizes[i] = size;
         out.offsets[i] = runs.intern(run.data(), size);
         out.weightOffsets[i] = pool.intern(triples.data(), 3 * size);
+    }
+    out.indices = runs.take();
+    out.weights = pool.take();
+    return out;
+}
+
+namespace {
+
+// Stencils per part of the composition to float, and parts per thread in a wave: enough to
+// balance, few enough that a wave's buffers stay small.
+constexpr int kPartStencils = 2048, kPartsPerThread = 4;
+
+// A part's stencils as the float table will hold them: each one's size, and their sorted runs of
+// sources and rounded weight triples back to back.
+struct LimitPart {
+    std::vector<int> sizes, runs;
+    std::vector<float> triples;
+};
+
+// One thread's working space: a slot per inner source (all -1 between stencils), the stencil being
+// composed, and the sort's order.
+struct ComposeScratch {
+    std::vector<int> slot, indices, order;
+    std::vector<double> weights;
+};
+
+}  // namespace
+
+LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, const StencilTableD& inner,
+                                              std::size_t maxBytes) {
+    const int n = limit.numStencils();
+    const std::size_t fixed = std::size_t(n) * 3 * sizeof(int);
+    if (fixed > maxBytes) throw std::length_error("composed limit stencils pass their budget");
+    // Every entry counted as if no run or triple were shared: the pools hold at most that.
+    const std::size_t maxEntries = (maxBytes - fixed) / (sizeof(int) + 3 * sizeof(float));
+    LimitStencilTable out;
+    out.numSourceVertices = inner.numSourceVertices;
+    out.sizes.resize(std::size_t(n));
+    out.offsets.resize(std::size_t(n));
+    out.weightOffsets.resize(std::size_t(n));
+    IndexPool runs;
+    WeightPool pool;
+    const int numParts = (n + kPartStencils - 1) / kPartStencils;
+    const int wave = std::max(1, std::min(numParts, kPartsPerThread * tbb::this_task_arena::max_concurrency()));
+    std::vector<LimitPart> parts(static_cast<std::size_t>(wave));
+    tbb::enumerable_thread_specific<ComposeScratch> scratch([&] {
+        ComposeScratch s;
+        s.slot.assign(std::size_t(inner.numSourceVertices), -1);
+        return s;
+    });
+    std::size_t placed = 0;  // entries interned so far
+    for (int first = 0; first < numParts; first += wave) {
+        const int count = std::min(wave, numParts - first);
+        tbb::parallel_for(0, count, [&](int p) {
+            LimitPart& part = parts[std::size_t(p)];
+            part.sizes.clear();
+            part.runs.clear();
+            part.triples.clear();
+            ComposeScratch& s = scratch.local();
+            const int begin = (first + p) * kPartStencils, end = std::min(n, begin + kPartStencils);
+            for (int i = begin; i < end; ++i) {
+                s.indices.clear();
+                s.weights.clear();
+                composeOneLimit(limit, inner, i, s.slot, s.indices, s.weights);
+                const std::size_t before = part.runs.size();
+                sortedEntries(int(s.indices.size()), s.indices.data(), s.weights.data(), s.order, part.runs, part.triples);
+                part.sizes.push_back(int(part.runs.size() - before));
+            }
+        });
+        // Interned on one thread in stencil order: the pools do not depend on the threads.
+        for (int p = 0; p < count; ++p) {
+            const LimitPart& part = parts[std::size_t(p)];
+            const int* run = part.runs.data();
+            const float* triple = part.triples.data();
+            int i = (first + p) * kPartStencils;
+            for (int size : part.sizes) {
+                placed += std::size_t(size);
+                if (placed > maxEntries) throw std::length_error("composed limit stencils pass their budget");
+                out.sizes[std::size_t(i)] = size;
+                out.offsets[std::size_t(i)] = runs.intern(run, size);
+                out.weightOffsets[std::size_t(i)] = pool.intern(triple, 3 * size);
+                run += size;
+                triple += 3 * size;
+                ++i;
+            }
+        }
     }
     out.indices = runs.take();
     out.weights = pool.take();

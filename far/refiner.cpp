@@ -435,23 +435,23 @@ LimitStencilTableD fvarLimitStencilsOf(const FVarChannelRefinement& channel, int
     return table;
 }
 
-// A limit table (limitOf()) composed with the tables below it (levelsOf()), rounded to float, each
-// made and freed within `budget`.
+// A limit table (limitOf()) composed with the tables below it (levelsOf()), straight into the
+// float table, each made and freed within `budget`.
 template <class Limit, class Levels>
 LimitStencilTable composeLimitWithin(CompositionBudget& budget, Limit limitOf, Levels levelsOf) {
-    LimitStencilTableD composed;
+    LimitStencilTable composed;
     {
         const LimitStencilTableD limit = limitOf();
         const StencilTableD levels = levelsOf();
         try {
-            composed = composeLimitStencils(limit, levels, budget.left());
+            composed = composeLimitStencilsToFloat(limit, levels, budget.left());
         } catch (const std::length_error&) {
             throw budget.refuse(budget.budget() + 1);
         }
         budget.release(bytesOf(limit) + bytesOf(levels));  // both freed at the end of this block
     }
-    budget.reserve(bytesOf(composed) + floatLimitBytes(composed.sizes.size(), composed.indices.size()));
-    return toFloatTable(composed);
+    budget.reserve(floatLimitBytes(std::size_t(composed.numStencils()), composed.numEntries()));
+    return composed;
 }
 
 }  // namespace

@@ -4,8 +4,12 @@
 // unshared double table it was made from.
 #include <gtest/gtest.h>
 
+#include <tbb/task_arena.h>
+
+#include <cstring>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bench/torus.h"
@@ -143,6 +147,52 @@ TEST(LimitSharing, SharedTableEvaluatesAsTheUnsharedDoubleTable) {
                 EXPECT_LE(distance(a.dv[v], b.dv[v]), 1e-6 * diagonal + 1e-5 * norm(b.dv[v])) << mesh << " level " << L;
             }
         }
+    }
+}
+
+void expectSameTable(const LimitStencilTable& got, const LimitStencilTable& want, const std::string& where) {
+    EXPECT_EQ(got.numSourceVertices, want.numSourceVertices) << where;
+    EXPECT_EQ(got.sizes, want.sizes) << where;
+    EXPECT_EQ(got.offsets, want.offsets) << where;
+    EXPECT_EQ(got.indices, want.indices) << where;
+    EXPECT_EQ(got.weightOffsets, want.weightOffsets) << where;
+    ASSERT_EQ(got.weights.size(), want.weights.size()) << where;
+    EXPECT_EQ(std::memcmp(got.weights.data(), want.weights.data(), got.weights.size() * sizeof(float)), 0)
+        << where << ": weight pools differ";
+}
+
+// The composition straight to float (parts composed, sorted and rounded on the threads, interned
+// in stencil order) is the double composition rounded by toFloatTable, bit for bit, pools and all,
+// on one thread and on four (several waves of parts).
+TEST(LimitSharing, CompositionToFloatIsTheDoubleOneRounded) {
+    for (const auto& [mesh, scheme, L] : {std::tuple{"osd/catmark_pawn.obj", Scheme::CatmullClark, 3},
+                                          std::tuple{"osd/loop_icos_infsharp.obj", Scheme::Loop, 3},
+                                          std::tuple{"mixed/mixed_torus.obj", Scheme::SchaeferWarren, 2}}) {
+        Options options;
+        options.scheme = scheme;
+        const RefinedMesh r = refineMesh(mesh, L, options);
+        const TriangleSplit split = rulesOf(scheme).triangleSplit();
+        RingStarts starts(r.refiner->level(0));
+        for (int l = 1; l <= L; ++l) {
+            const Topology& parent = r.refiner->level(l - 1);
+            starts.descend(parent, numberChildren(parent, split), r.refiner->level(l).numVertices);
+        }
+        const Topology last = refineTopology(r.refiner->level(L - 1),
+                                             numberChildren(r.refiner->level(L - 1), split), options.creaseMethod,
+                                             TopologyDetail::Full);
+        const LimitStencilTableD limit = buildLimitStencils(last, options, &starts);
+        const StencilTableD inner = toDoubleTable(r.refiner->factorizedStencils(L));
+        const LimitStencilTable want = toFloatTable(composeLimitStencils(limit, inner));
+        const std::string where = std::string(mesh) + " level " + std::to_string(L);
+        LimitStencilTable serial, threaded;
+        tbb::task_arena(1).execute([&] { serial = composeLimitStencilsToFloat(limit, inner); });
+        tbb::task_arena(4).execute([&] { threaded = composeLimitStencilsToFloat(limit, inner); });
+        expectSameTable(serial, want, where + ", one thread");
+        expectSameTable(threaded, want, where + ", four threads");
+        if (std::string(mesh) == "osd/catmark_pawn.obj") EXPECT_GT(limit.numStencils(), 4 * 4 * 2048) << "one wave only";
+        EXPECT_THROW(composeLimitStencilsToFloat(limit, inner, 3 * sizeof(int) * std::size_t(limit.numStencils()) + 64),
+                     std::length_error)
+            << where;
     }
 }
 

@@ -38,6 +38,14 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
 LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
                                         std::size_t maxBytes = ~std::size_t(0));
 
+// toFloatTable(composeLimitStencils(limit, inner)), bit for bit, without the double table between
+// them (an index and three doubles an entry, hundreds of MB at the demo's level 3, first touched
+// as new pages): parts of stencils composed, sorted and rounded on the threads, interned in stencil
+// order on one. Throws std::length_error once its entries, counted as if none were pooled, would
+// pass `maxBytes`.
+LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, const StencilTableD& inner,
+                                              std::size_t maxBytes = ~std::size_t(0));
+
 // Rounded to float: each stencil's entries sorted by source (a source listed twice becomes one
 // entry, its weights added in double), its run of sources and its weight triples each interned in
 // their pool. Serial and in stencil order, so the table is the same whoever built `table`.
