@@ -1,9 +1,14 @@
 // Test helpers for limit stencils: the plain loop that applies a LimitStencilTable's three weight
-// runs (in double, so that tests see the table's own error only), and vector geometry.
+// runs (in double, so that tests see the table's own error only), vector geometry, and the
+// comparison of two tables bit for bit.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <string>
 #include <vector>
 
 #include <quadtri/far/limit_stencil_table.h>
@@ -11,6 +16,19 @@
 namespace quadtri::test {
 
 using Vec3 = std::array<double, 3>;
+
+// got is want, bit for bit: arrays and pools (weights compared as bytes, -0.0 and 0.0 apart).
+inline void expectSameLimitTable(const LimitStencilTable& got, const LimitStencilTable& want, const std::string& where) {
+    EXPECT_EQ(got.numSourceVertices, want.numSourceVertices) << where;
+    EXPECT_EQ(got.sizes, want.sizes) << where;
+    EXPECT_EQ(got.offsets, want.offsets) << where;
+    EXPECT_EQ(got.indices, want.indices) << where;
+    EXPECT_EQ(got.weightOffsets, want.weightOffsets) << where;
+    ASSERT_EQ(got.weights.size(), want.weights.size()) << where;
+    EXPECT_TRUE(got.weights.empty() ||
+                std::memcmp(got.weights.data(), want.weights.data(), got.weights.size() * sizeof(float)) == 0)
+        << where << ": weight pools differ";
+}
 
 struct LimitData {
     std::vector<Vec3> position, du, dv;

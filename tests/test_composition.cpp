@@ -21,6 +21,7 @@
 #include "far/internal/scheme.h"
 #include "far/internal/stencil_table_double.h"
 #include "far/internal/varying_table.h"
+#include "tests/limit_support.h"
 #include "tests/test_support.h"
 
 namespace quadtri::test {
@@ -298,15 +299,6 @@ TEST(Composition, ChannelAndVaryingTablesAsTheReference) {
     }
 }
 
-void expectSame(const LimitStencilTable& got, const LimitStencilTable& want, const std::string& where) {
-    EXPECT_EQ(got.numSourceVertices, want.numSourceVertices) << where;
-    EXPECT_EQ(got.sizes, want.sizes) << where;
-    EXPECT_EQ(got.offsets, want.offsets) << where;
-    EXPECT_EQ(got.indices, want.indices) << where;
-    EXPECT_EQ(got.weightOffsets, want.weightOffsets) << where;
-    EXPECT_TRUE(sameBits(got.weights, want.weights)) << where << ": weight pools differ";
-}
-
 // A Refiner refined without its per-level tables (LevelTables::None) makes the factorized tables
 // of one that keeps them, bit for bit: on regular tori (every stencil templated: no per-level
 // table read), with a crease (templated and composed stencils side by side: the tables of the
@@ -339,7 +331,7 @@ TEST(Composition, FactorizedTablesWithoutLevelTables) {
             EXPECT_FALSE(none.hasLevelStencils(L)) << at;
             EXPECT_THROW(none.levelStencils(L), std::logic_error) << at;
             expectSame(none.factorizedStencils(L), kept.factorizedStencils(L), at + " factorized");
-            expectSame(none.factorizedLimitStencils(L), kept.factorizedLimitStencils(L), at + " factorized limit");
+            expectSameLimitTable(none.factorizedLimitStencils(L), kept.factorizedLimitStencils(L), at + " factorized limit");
         }
         EXPECT_THROW(none.levelStencils(4), std::out_of_range) << where;
         none.refineUniform(2);  // levels 1 and 2 get their tables, level 3 none yet
