@@ -20,9 +20,9 @@ class FVarChannelRefinement;
 // Whether refineUniform builds the per-level stencil table of each level it refines
 // (levelStencils). A caller that reads only tables over the control vertices (factorizedStencils,
 // factorizedLimitStencils) asks for None: those compose from the regular faces' templates and
-// make, for the call alone, the per-level tables of the levels where a stencil needs one
-// (docs/architecture.md, "Factorized tables"). OpenSubdiv's StencilTableFactory likewise builds
-// a factorized table without the per-level ones.
+// make, for the call alone, the rows of the per-level tables that a stencil reads
+// (docs/factorized_templates.md, "Per-level tables only where a row is read"). OpenSubdiv's
+// StencilTableFactory likewise builds a factorized table without the per-level ones.
 enum class LevelTables {
     Build,  // every refined level keeps its table: levelStencils(L) for any L
     None,   // the levels refined by this call keep none (face-varying channels still keep theirs)
