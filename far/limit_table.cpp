@@ -218,35 +218,9 @@ void sortedEntries(int size, const int* sources, const double* weights, std::vec
 
 }  // namespace
 
-LimitStencilTable toFloatTable(const LimitStencilTableD& table) {
-    LimitStencilTable out;
-    out.numSourceVertices = table.numSourceVertices;
-    const int n = table.numStencils();
-    out.sizes.resize(n);
-    out.offsets.resize(n);
-    out.weightOffsets.resize(n);
-    IndexPool runs;
-    WeightPool pool;
-    std::vector<int> order, run;
-    std::vector<float> triples;
-    for (int i = 0; i < n; ++i) {
-        run.clear();
-        triples.clear();
-        sortedEntries(table.sizes[i], table.indices.data() + table.offsets[i],
-                      table.weights.data() + 3 * std::size_t(table.offsets[i]), order, run, triples);
-        const int size = int(run.size());
-        out.sizes[i] = size;
-        out.offsets[i] = runs.intern(run.data(), size);
-        out.weightOffsets[i] = pool.intern(triples.data(), 3 * size);
-    }
-    out.indices = runs.take();
-    out.weights = pool.take();
-    return out;
-}
-
 namespace {
 
-// Stencils per part of the composition to float, and parts per thread in a wave: enough to
+// Stencils per part of a float table built in parts, and parts per thread in a wave: enough to
 // balance, few enough that a wave's buffers stay small.
 constexpr int kPartStencils = 2048, kPartsPerThread = 4;
 
@@ -257,24 +231,15 @@ struct LimitPart {
     std::vector<float> triples;
 };
 
-// One thread's working space: a slot per inner source (all -1 between stencils), the stencil being
-// composed, and the sort's order.
-struct ComposeScratch {
-    std::vector<int> slot, indices, order;
-    std::vector<double> weights;
-};
-
-}  // namespace
-
-LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, const StencilTableD& inner,
-                                              std::size_t maxBytes) {
-    const int n = limit.numStencils();
-    const std::size_t fixed = std::size_t(n) * 3 * sizeof(int);
-    if (fixed > maxBytes) throw std::length_error("composed limit stencils pass their budget");
-    // Every entry counted as if no run or triple were shared: the pools hold at most that.
-    const std::size_t maxEntries = (maxBytes - fixed) / (sizeof(int) + 3 * sizeof(float));
+// The float table of n stencils over `numSources` sources: fill(i, scratch, runs, triples) appends
+// stencil i's sorted run and rounded triples (sortedEntries), in parts of consecutive stencils on
+// oneTBB's threads, each thread with its own scratch (makeScratch()); the parts are then interned
+// on one thread in stencil order, so the pools, and the table, do not depend on the threads.
+// Throws std::length_error once the entries, counted as if none were pooled, pass maxEntries.
+template <class MakeScratch, class Fill>
+LimitStencilTable floatTableInParts(int n, int numSources, std::size_t maxEntries, MakeScratch makeScratch, Fill fill) {
     LimitStencilTable out;
-    out.numSourceVertices = inner.numSourceVertices;
+    out.numSourceVertices = numSources;
     out.sizes.resize(std::size_t(n));
     out.offsets.resize(std::size_t(n));
     out.weightOffsets.resize(std::size_t(n));
@@ -283,11 +248,7 @@ LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, c
     const int numParts = (n + kPartStencils - 1) / kPartStencils;
     const int wave = std::max(1, std::min(numParts, kPartsPerThread * tbb::this_task_arena::max_concurrency()));
     std::vector<LimitPart> parts(static_cast<std::size_t>(wave));
-    tbb::enumerable_thread_specific<ComposeScratch> scratch([&] {
-        ComposeScratch s;
-        s.slot.assign(std::size_t(inner.numSourceVertices), -1);
-        return s;
-    });
+    tbb::enumerable_thread_specific<decltype(makeScratch())> scratch(makeScratch);
     std::size_t placed = 0;  // entries interned so far
     for (int first = 0; first < numParts; first += wave) {
         const int count = std::min(wave, numParts - first);
@@ -296,18 +257,14 @@ LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, c
             part.sizes.clear();
             part.runs.clear();
             part.triples.clear();
-            ComposeScratch& s = scratch.local();
+            auto& s = scratch.local();
             const int begin = (first + p) * kPartStencils, end = std::min(n, begin + kPartStencils);
             for (int i = begin; i < end; ++i) {
-                s.indices.clear();
-                s.weights.clear();
-                composeOneLimit(limit, inner, i, s.slot, s.indices, s.weights);
                 const std::size_t before = part.runs.size();
-                sortedEntries(int(s.indices.size()), s.indices.data(), s.weights.data(), s.order, part.runs, part.triples);
+                fill(i, s, part.runs, part.triples);
                 part.sizes.push_back(int(part.runs.size() - before));
             }
         });
-        // Interned on one thread in stencil order: the pools do not depend on the threads.
         for (int p = 0; p < count; ++p) {
             const LimitPart& part = parts[std::size_t(p)];
             const int* run = part.runs.data();
@@ -315,7 +272,7 @@ LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, c
             int i = (first + p) * kPartStencils;
             for (int size : part.sizes) {
                 placed += std::size_t(size);
-                if (placed > maxEntries) throw std::length_error("composed limit stencils pass their budget");
+                if (placed > maxEntries) throw std::length_error("limit stencils pass their budget");
                 out.sizes[std::size_t(i)] = size;
                 out.offsets[std::size_t(i)] = runs.intern(run, size);
                 out.weightOffsets[std::size_t(i)] = pool.intern(triple, 3 * size);
@@ -328,6 +285,82 @@ LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, c
     out.indices = runs.take();
     out.weights = pool.take();
     return out;
+}
+
+// Entries a float table of n stencils may hold within maxBytes, each counted as if unpooled (an
+// index and three floats; three ints per stencil).
+std::size_t floatEntryLimit(int n, std::size_t maxBytes) {
+    const std::size_t fixed = std::size_t(n) * 3 * sizeof(int);
+    if (fixed > maxBytes) throw std::length_error("limit stencils pass their budget");
+    return (maxBytes - fixed) / (sizeof(int) + 3 * sizeof(float));
+}
+
+// One thread's working space for the sort alone.
+struct SortScratch {
+    std::vector<int> order;
+};
+
+// One thread's working space for the composition: a slot per inner source (all -1 between
+// stencils), the stencil being composed, and the sort's order.
+struct ComposeScratch {
+    std::vector<int> slot, indices, order;
+    std::vector<double> weights;
+};
+
+// One thread's working space for the masks: the ring, the mask, the cache of analysed
+// configurations (its answers do not depend on what it holds), the mask's weights interleaved.
+struct MaskScratch {
+    VertexRing ring;
+    LimitMask mask;
+    LimitMaskCache cache;
+    std::vector<double> weights;
+    std::vector<int> order;
+};
+
+}  // namespace
+
+LimitStencilTable toFloatTable(const LimitStencilTableD& table) {
+    return floatTableInParts(
+        table.numStencils(), table.numSourceVertices, ~std::size_t(0), [] { return SortScratch(); },
+        [&](int i, SortScratch& s, std::vector<int>& run, std::vector<float>& triples) {
+            sortedEntries(table.sizes[i], table.indices.data() + table.offsets[i],
+                          table.weights.data() + 3 * std::size_t(table.offsets[i]), s.order, run, triples);
+        });
+}
+
+LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, const StencilTableD& inner,
+                                              std::size_t maxBytes) {
+    const int n = limit.numStencils();
+    return floatTableInParts(
+        n, inner.numSourceVertices, floatEntryLimit(n, maxBytes),
+        [&] {
+            ComposeScratch s;
+            s.slot.assign(std::size_t(inner.numSourceVertices), -1);
+            return s;
+        },
+        [&](int i, ComposeScratch& s, std::vector<int>& run, std::vector<float>& triples) {
+            s.indices.clear();
+            s.weights.clear();
+            composeOneLimit(limit, inner, i, s.slot, s.indices, s.weights);
+            sortedEntries(int(s.indices.size()), s.indices.data(), s.weights.data(), s.order, run, triples);
+        });
+}
+
+LimitStencilTable buildLimitStencilsToFloat(const Topology& level, const Options& options, const RingStarts* starts,
+                                            std::size_t maxBytes) {
+    const SchemeRules& rules = rulesOf(options.scheme);
+    const int n = level.numVertices;
+    return floatTableInParts(
+        n, n, floatEntryLimit(n, maxBytes), [] { return MaskScratch(); },
+        [&](int v, MaskScratch& s, std::vector<int>& run, std::vector<float>& triples) {
+            orderVertexRing(level, v, starts ? starts->startFace(v) : -1, s.ring);
+            s.mask.clear();
+            rules.limitMask(LimitVertex{level, options, s.ring, limitRule(level, s.ring)}, s.cache, s.mask);
+            s.weights.clear();
+            for (int k = 0; k < s.mask.size(); ++k)
+                s.weights.insert(s.weights.end(), {s.mask.position[k], s.mask.du[k], s.mask.dv[k]});
+            sortedEntries(s.mask.size(), s.mask.indices.data(), s.weights.data(), s.order, run, triples);
+        });
 }
 
 std::size_t bytesOf(const LimitStencilTableD& table) {

@@ -385,9 +385,18 @@ std::size_t floatLimitBytes(std::size_t n, std::size_t entries) {
     return entries * (sizeof(int) + 3 * sizeof(float)) + n * (3 * sizeof(int) + 2 * 3 * sizeof(int) + 3 * sizeof(float));
 }
 
-// Level L's limit stencils in double, what they allocate reserved in `budget`. A faces-only
-// level is completed for this call only.
-LimitStencilTableD limitStencilsOf(const Refiner& refiner, int L, CompositionBudget& budget) {
+// What a limit table holds in the budget: a double one its arrays; a float one as
+// floatLimitBytes counts it (its entries as if unpooled, with a 3-float output).
+std::size_t tableBytes(const LimitStencilTableD& table) { return bytesOf(table); }
+std::size_t tableBytes(const LimitStencilTable& table) {
+    return floatLimitBytes(std::size_t(table.numStencils()), table.numEntries());
+}
+
+// Level L's limit stencils as build(level L's topology, its ring starts) makes them (in double, or
+// straight to float), what they allocate reserved in `budget`. A faces-only level is completed
+// for this call only.
+template <class Build>
+auto limitStencilsOf(const Refiner& refiner, int L, CompositionBudget& budget, Build build) {
     const TriangleSplit split = rulesOf(refiner.options().scheme).triangleSplit();
     Topology completed;
     const Topology* topology = nullptr;
@@ -410,11 +419,11 @@ LimitStencilTableD limitStencilsOf(const Refiner& refiner, int L, CompositionBud
     const std::size_t bound = limitEntryBound(*topology) * (sizeof(int) + 3 * sizeof(double)) +
                               std::size_t(topology->numVertices) * 2 * sizeof(int);
     budget.reserve(bound);
-    LimitStencilTableD table = buildLimitStencils(*topology, refiner.options(), &starts);
+    auto table = build(*topology, starts);
     // What stays alive is the table itself: the completed level goes, and the bound was an upper
     // one (the composition that follows gets what it leaves).
     budget.release(completion + bound);
-    budget.reserve(bytesOf(table));
+    budget.reserve(tableBytes(table));
     return table;
 }
 
@@ -535,9 +544,10 @@ void Refiner::checkLimitLevel(const char* what, int L) const {
 LimitStencilTable Refiner::limitStencils(int L) const {
     checkLimitLevel("limit stencils", L);
     CompositionBudget budget("the limit stencils of level " + std::to_string(L), bytes(), options_.memoryBudgetBytes);
-    const LimitStencilTableD table = limitStencilsOf(*this, L, budget);
-    budget.reserve(floatLimitBytes(table.sizes.size(), table.indices.size()));
-    return toFloatTable(table);
+    // Straight to float: the bound reserved for the double table covers the float one.
+    return limitStencilsOf(*this, L, budget, [&](const Topology& level, const RingStarts& starts) {
+        return buildLimitStencilsToFloat(level, options_, &starts);
+    });
 }
 
 LimitStencilTable Refiner::factorizedLimitStencils(int L) const {
@@ -546,7 +556,13 @@ LimitStencilTable Refiner::factorizedLimitStencils(int L) const {
     CompositionBudget budget("the factorized limit stencils of level " + std::to_string(L), bytes(),
                              options_.memoryBudgetBytes);
     return composeLimitWithin(
-        budget, [&] { return limitStencilsOf(*this, L, budget); }, [&] { return composeLevelTables(L, budget, PositionLevels(*this)); });
+        budget,
+        [&] {
+            return limitStencilsOf(*this, L, budget, [&](const Topology& level, const RingStarts& starts) {
+                return buildLimitStencils(level, options_, &starts);
+            });
+        },
+        [&] { return composeLevelTables(L, budget, PositionLevels(*this)); });
 }
 
 LimitStencilTable Refiner::fvarLimitStencils(int c, int L) const {

@@ -149,10 +149,11 @@ TEST(LimitSharing, SharedTableEvaluatesAsTheUnsharedDoubleTable) {
     }
 }
 
-// The composition straight to float (parts composed, sorted and rounded on the threads, interned
-// in stencil order) is the double composition rounded by toFloatTable, bit for bit, pools and all,
-// on one thread and on four (several waves of parts).
-TEST(LimitSharing, CompositionToFloatIsTheDoubleOneRounded) {
+// The float tables made in parts (composed or masked, sorted and rounded on the threads, interned
+// in stencil order) are the double tables rounded by toFloatTable, bit for bit, pools and all, on
+// one thread and on four (several waves of parts): the composition, the masks of a level, and
+// toFloatTable itself.
+TEST(LimitSharing, FloatTablesInPartsAreTheDoubleOnesRounded) {
     for (const auto& [mesh, scheme, L] : {std::tuple{"osd/catmark_pawn.obj", Scheme::CatmullClark, 3},
                                           std::tuple{"osd/loop_icos_infsharp.obj", Scheme::Loop, 3},
                                           std::tuple{"mixed/mixed_torus.obj", Scheme::SchaeferWarren, 2}}) {
@@ -177,6 +178,16 @@ TEST(LimitSharing, CompositionToFloatIsTheDoubleOneRounded) {
         tbb::task_arena(4).execute([&] { threaded = composeLimitStencilsToFloat(limit, inner); });
         expectSameLimitTable(serial, want, where + ", one thread");
         expectSameLimitTable(threaded, want, where + ", four threads");
+        const LimitStencilTable wantMasks = toFloatTable(limit);
+        LimitStencilTable masksSerial, masksThreaded, roundedSerial;
+        tbb::task_arena(1).execute([&] {
+            masksSerial = buildLimitStencilsToFloat(last, options, &starts);
+            roundedSerial = toFloatTable(limit);
+        });
+        tbb::task_arena(4).execute([&] { masksThreaded = buildLimitStencilsToFloat(last, options, &starts); });
+        expectSameLimitTable(masksSerial, wantMasks, where + " masks, one thread");
+        expectSameLimitTable(masksThreaded, wantMasks, where + " masks, four threads");
+        expectSameLimitTable(roundedSerial, wantMasks, where + " rounded on one thread");
         if (std::string(mesh) == "osd/catmark_pawn.obj") {
             EXPECT_GT(limit.numStencils(), 4 * 4 * 2048) << "one wave only";
         }

@@ -33,6 +33,13 @@ class RingStarts;
 // null: at each vertex's lowest-numbered face, as OpenSubdiv does at level 0.
 LimitStencilTableD buildLimitStencils(const Topology& level, const Options& options, const RingStarts* starts);
 
+// toFloatTable(buildLimitStencils(level, options, starts)), bit for bit, without the double table:
+// the masks made, sorted and rounded in parts on the threads, interned in vertex order on one.
+// Throws std::length_error once its entries, counted as if none were pooled, would pass
+// `maxBytes`.
+LimitStencilTable buildLimitStencilsToFloat(const Topology& level, const Options& options, const RingStarts* starts,
+                                            std::size_t maxBytes = ~std::size_t(0));
+
 // limit ∘ inner: the limit stencils expanded over inner's sources. Throws std::length_error before
 // the result's arrays would pass `maxBytes`.
 LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
@@ -48,7 +55,8 @@ LimitStencilTable composeLimitStencilsToFloat(const LimitStencilTableD& limit, c
 
 // Rounded to float: each stencil's entries sorted by source (a source listed twice becomes one
 // entry, its weights added in double), its run of sources and its weight triples each interned in
-// their pool. Serial and in stencil order, so the table is the same whoever built `table`.
+// their pool. Sorted in parts on the threads, interned on one in stencil order, so the table is the
+// same whoever built `table` and on any number of threads.
 LimitStencilTable toFloatTable(const LimitStencilTableD& table);
 
 std::size_t bytesOf(const LimitStencilTableD& table);
