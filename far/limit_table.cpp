@@ -1,11 +1,11 @@
-// Limit stencil tables (docs/limit.md): one mask per vertex from the scheme's hook, built in
-// parallel parts (one ring, mask and cache per part, joined in vertex order, so the table does
-// not depend on the thread count), composition over the control vertices, the float table with
-// its runs of sources and its weight triples pooled.
+// Limit stencil tables (docs/limit.md): one mask per vertex from the scheme's hook, composition
+// over the control vertices, the float table with its runs of sources and its weight triples
+// pooled. The Refiner's tables are made straight in float, in parts on the threads interned in
+// stencil order (floatTableInParts); the double masks feed the composition, and the double
+// composition is the reference the float one is tested against. None depends on the thread count.
 #include "far/internal/limit_table.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
 #include <numeric>
 #include <stdexcept>
@@ -25,15 +25,13 @@ inline namespace v0 {
 
 namespace {
 
-void appendMask(const LimitMask& mask, LimitStencilTableD& table) {
-    table.offsets.push_back(int(table.indices.size()));
-    table.sizes.push_back(mask.size());
-    for (int k = 0; k < mask.size(); ++k) {
-        table.indices.push_back(mask.indices[k]);
-        table.weights.push_back(mask.position[k]);
-        table.weights.push_back(mask.du[k]);
-        table.weights.push_back(mask.dv[k]);
-    }
+// Vertex v's limit mask into `mask`, its weights interleaved (position, dU, dV) onto `weights`.
+void limitMaskOf(const Topology& level, const Options& options, const SchemeRules& rules, const RingStarts* starts,
+                 int v, VertexRing& ring, LimitMaskCache& cache, LimitMask& mask, std::vector<double>& weights) {
+    orderVertexRing(level, v, starts ? starts->startFace(v) : -1, ring);
+    mask.clear();
+    rules.limitMask(LimitVertex{level, options, ring, limitRule(level, ring)}, cache, mask);
+    for (int k = 0; k < mask.size(); ++k) weights.insert(weights.end(), {mask.position[k], mask.du[k], mask.dv[k]});
 }
 
 void append(const LimitStencilTableD& part, LimitStencilTableD& table) {
@@ -98,10 +96,10 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
                                   (level.vertFaceOffsets[until] - level.vertFaceOffsets[first]);
         reserveFor(std::size_t(until - first), bound, part);
         for (int v = first; v < last; ++v) {
-            orderVertexRing(level, v, starts ? starts->startFace(v) : -1, ring);
-            mask.clear();
-            rules.limitMask(LimitVertex{level, options, ring, limitRule(level, ring)}, cache, mask);
-            appendMask(mask, part);
+            part.offsets.push_back(int(part.indices.size()));
+            limitMaskOf(level, options, rules, starts, v, ring, cache, mask, part.weights);
+            part.sizes.push_back(mask.size());
+            part.indices.insert(part.indices.end(), mask.indices.begin(), mask.indices.end());
         }
     });
     LimitStencilTableD table = joined(built);
@@ -138,58 +136,18 @@ void composeOneLimit(const LimitStencilTableD& limit, const StencilTableD& inner
     for (std::size_t k = start; k < indices.size(); ++k) slot[indices[k]] = -1;
 }
 
-// The entries stencil i of limit ∘ inner can have: its entries' inner stencils added up.
-std::size_t mostEntries(const LimitStencilTableD& limit, const StencilTableD& inner, int i) {
-    std::size_t most = 0;
-    for (int k = 0; k < limit.sizes[i]; ++k) most += std::size_t(inner.sizes[limit.indices[limit.offsets[i] + k]]);
-    return most;
-}
-
-// Stencils [first, last) of limit ∘ inner into `out`; `entries` counts every part's entries so
-// that all of them together stop at `maxEntries`. The arrays are reserved (the first part's for
-// every part's stencils, joined) for the inner table's entries per stencil and a quarter more (a
-// limit stencil reads its vertex's ring, whose composed stencils overlap: the demo's limb at level
-// 3 has 14.4 entries a composed limit stencil over 12.6 an inner one), and grow by half before a
-// stencil that might not fit, onto fresh pages each time: growing by doubling behind push_back
-// copied the arrays and faulted each new block in 4 KiB at a time, most of the composition's time.
-void composeRange(const LimitStencilTableD& limit, const StencilTableD& inner, int first, int last,
-                  std::atomic<std::size_t>& entries, std::size_t maxEntries, LimitStencilTableD& out) {
-    std::vector<int> slot(inner.numSourceVertices, -1);
-    const double perStencil = inner.sizes.empty() ? 0.0 : double(inner.indices.size()) / double(inner.sizes.size());
-    const int reserved = first == 0 ? limit.numStencils() : last - first;
-    reserveFor(std::size_t(reserved), std::min(maxEntries, std::size_t(1.25 * perStencil * double(reserved)) + 16), out);
-    for (int i = first; i < last; ++i) {
-        const std::size_t start = out.indices.size(), most = mostEntries(limit, inner, i);
-        if (start + most > out.indices.capacity()) {
-            const std::size_t grown = start + most + (start + most) / 2;
-            reserveFresh(out.indices, grown);
-            reserveFresh(out.weights, 3 * grown);
-        }
-        out.offsets.push_back(int(start));
-        composeOneLimit(limit, inner, i, slot, out.indices, out.weights);
-        const int size = int(out.indices.size() - start);
-        out.sizes.push_back(size);
-        if (entries.fetch_add(size) + size > maxEntries) throw std::length_error("composed limit stencils pass their budget");
-    }
-}
-
 }  // namespace
 
-LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
-                                        std::size_t maxBytes) {
-    const int n = limit.numStencils();
-    const int parts = std::max(1, std::min(tbb::this_task_arena::max_concurrency(), n / kMinVerticesPerPart));
-    // Bytes per entry (an index, three weights), twice over while parts are joined.
-    const std::size_t perEntry = (parts > 1 ? 2 : 1) * (sizeof(int) + 3 * sizeof(double));
-    const std::size_t fixed = std::size_t(n) * 2 * sizeof(int);
-    if (fixed > maxBytes) throw std::length_error("composed limit stencils pass their budget");
-    const std::size_t maxEntries = std::min<std::size_t>((maxBytes - fixed) / perEntry, INT32_MAX);
-    auto split = [&](int k) { return int(std::int64_t(n) * k / parts); };
-    std::atomic<std::size_t> entries{0};
-    std::vector<LimitStencilTableD> built(parts);
-    tbb::parallel_for(0, parts, [&](int k) { composeRange(limit, inner, split(k), split(k + 1), entries, maxEntries, built[k]); });
-    LimitStencilTableD out = joined(built);
+LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner) {
+    LimitStencilTableD out;
     out.numSourceVertices = inner.numSourceVertices;
+    std::vector<int> slot(std::size_t(inner.numSourceVertices), -1);
+    for (int i = 0; i < limit.numStencils(); ++i) {
+        const std::size_t start = out.indices.size();
+        out.offsets.push_back(int(start));
+        composeOneLimit(limit, inner, i, slot, out.indices, out.weights);
+        out.sizes.push_back(int(out.indices.size() - start));
+    }
     return out;
 }
 
@@ -353,12 +311,8 @@ LimitStencilTable buildLimitStencilsToFloat(const Topology& level, const Options
     return floatTableInParts(
         n, n, floatEntryLimit(n, maxBytes), [] { return MaskScratch(); },
         [&](int v, MaskScratch& s, std::vector<int>& run, std::vector<float>& triples) {
-            orderVertexRing(level, v, starts ? starts->startFace(v) : -1, s.ring);
-            s.mask.clear();
-            rules.limitMask(LimitVertex{level, options, s.ring, limitRule(level, s.ring)}, s.cache, s.mask);
             s.weights.clear();
-            for (int k = 0; k < s.mask.size(); ++k)
-                s.weights.insert(s.weights.end(), {s.mask.position[k], s.mask.du[k], s.mask.dv[k]});
+            limitMaskOf(level, options, rules, starts, v, s.ring, s.cache, s.mask, s.weights);
             sortedEntries(s.mask.size(), s.mask.indices.data(), s.weights.data(), s.order, run, triples);
         });
 }

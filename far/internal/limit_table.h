@@ -40,10 +40,9 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
 LimitStencilTable buildLimitStencilsToFloat(const Topology& level, const Options& options, const RingStarts* starts,
                                             std::size_t maxBytes = ~std::size_t(0));
 
-// limit ∘ inner: the limit stencils expanded over inner's sources. Throws std::length_error before
-// the result's arrays would pass `maxBytes`.
-LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner,
-                                        std::size_t maxBytes = ~std::size_t(0));
+// limit ∘ inner: the limit stencils expanded over inner's sources, in double, on one thread. The
+// reference composeLimitStencilsToFloat is tested against (the Refiner composes to float).
+LimitStencilTableD composeLimitStencils(const LimitStencilTableD& limit, const StencilTableD& inner);
 
 // toFloatTable(composeLimitStencils(limit, inner)), bit for bit, without the double table between
 // them (an index and three doubles an entry, hundreds of MB at the demo's level 3, first touched
