@@ -1,22 +1,22 @@
 #include "far/internal/limit_closed_forms.h"
 #include "far/internal/schaefer_warren.h"
 
-#include "far/internal/level_estimate.h"
-#include "far/internal/unzip.h"
+#include "far/internal/for_each.h"
+#include "far/internal/fresh_pages.h"
 
 namespace quadtri {
 inline namespace v0 {
 
-UnzippedLevel::UnzippedLevel(const Topology& t)
-    : triangleCopies(unzipStencils(t, Piece::Triangle)),
-      quadCopies(unzipStencils(t, Piece::Quad)),
-      vertexSplits(t.numVertices, 0),
-      faceTouches(t.numFaces(), 0) {
-    // Both pieces' copies have one entry per network edge besides the vertex itself.
-    for (int v = 0; v < t.numVertices; ++v) vertexSplits[v] = quadCopies.sizes[v] > 1 ? 1 : 0;
-    for (int f = 0; f < t.numFaces(); ++f)
+UnzippedLevel::UnzippedLevel(const Topology& t) : copies(unzipCopies(t)) {
+    if (copies.splitting.empty()) return;
+    assignFresh(faceTouches, std::size_t(t.numFaces()), 0);
+    forEach(t.numFaces(), [&](int f) {
         for (int v : t.verticesOfFace(f))
-            if (vertexSplits[v]) faceTouches[f] = 1;
+            if (copies.splits(v)) {
+                faceTouches[f] = 1;
+                return;
+            }
+    });
 }
 
 SchaeferWarrenMasks::SchaeferWarrenMasks(const Topology& topology, const UnzippedLevel& unzipped,
@@ -25,18 +25,18 @@ SchaeferWarrenMasks::SchaeferWarrenMasks(const Topology& topology, const Unzippe
 
 bool SchaeferWarrenMasks::touchesEdge(int e) const {
     for (int f : t_.facesOfEdge(e))
-        if (u_.faceTouches[f]) return true;
+        if (touchesFace(f)) return true;
     return false;
 }
 
 bool SchaeferWarrenMasks::touchesVertex(int v) const {
     for (int f : t_.facesOfVertex(v))
-        if (u_.faceTouches[f]) return true;
+        if (touchesFace(f)) return true;
     return false;
 }
 
 void SchaeferWarrenMasks::addCopy(int v, bool quad, double scale) {
-    if (!u_.vertexSplits[v]) quad = false;  // both copies are v itself: one term
+    if (!u_.copies.splits(v)) quad = false;  // both copies are v itself: one term
     for (Copy& c : copies_)
         if (c.vertex == v && c.quad == quad) {
             c.weight += scale;
@@ -47,13 +47,14 @@ void SchaeferWarrenMasks::addCopy(int v, bool quad, double scale) {
 
 void SchaeferWarrenMasks::flushCopies() {
     for (const Copy& c : copies_) {
-        if (!u_.vertexSplits[c.vertex]) {  // the copy is the vertex with weight 1
+        if (!u_.copies.splits(c.vertex)) {  // the copy is the vertex with weight 1
             acc_.add(c.vertex, c.weight);
             continue;
         }
-        const StencilTableD& table = c.quad ? u_.quadCopies : u_.triangleCopies;
+        const StencilTableD& table = u_.copies.of(c.quad ? Piece::Quad : Piece::Triangle);
         // The copy's bounds read once: the accumulator's int stores could otherwise change them.
-        const int first = table.offsets[c.vertex], last = first + table.sizes[c.vertex];
+        const int row = u_.copies.rowOf[c.vertex];
+        const int first = table.offsets[row], last = first + table.sizes[row];
         const int* indices = table.indices.data();
         const double* weights = table.weights.data();
         for (int k = first; k < last; ++k) acc_.add(indices[k], c.weight * weights[k]);
@@ -171,10 +172,10 @@ public:
     void limitMask(const LimitVertex& vertex, LimitMaskCache& cache, LimitMask& out) const override {
         if (!pureClosedForm(vertex, true, out)) limitFromLocalMatrix(*this, vertex, cache, out);
     }
-    // Each parent vertex's two copies: one entry per network neighbour (at most two per edge)
-    // and the vertex itself, with an offset and a size each.
+    // The copies of the vertices that split, and a flag per face where any does.
     std::size_t extraLevelBytes(const Topology& parent) const override {
-        return 2 * (std::size_t(parent.numVertices) * (8 + 12) + 2 * edgeCountBound(parent) * 12);
+        const std::size_t copies = unzipBytesBound(parent);
+        return copies ? copies + std::size_t(parent.numFaces()) : 0;
     }
 };
 

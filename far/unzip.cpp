@@ -1,6 +1,11 @@
 #include "far/internal/unzip.h"
 
+#include <algorithm>
+
 #include "far/internal/crease.h"
+#include "far/internal/for_each.h"
+#include "far/internal/fresh_pages.h"
+#include "far/internal/level_estimate.h"
 #include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
@@ -26,32 +31,70 @@ bool keepsOnePosition(const Topology& t, int v) {
     return sharp >= 2 && semiSharp;
 }
 
+// Appends vertex v's copy for `piece`: v first, then its network neighbours in incidence order.
+void appendCopy(const Topology& t, int v, Piece piece, StencilTableD& table) {
+    const double sign = piece == Piece::Triangle ? 1.0 : -1.0;
+    table.offsets.push_back(int(table.indices.size()));
+    table.indices.push_back(v);
+    table.weights.push_back(1.0);
+    const std::size_t centre = table.weights.size() - 1;
+    for (int e : t.edgesOfVertex(v)) {
+        if (!isNetworkEdge(t, e)) continue;
+        table.indices.push_back(t.otherVertex(e, v));
+        table.weights.push_back(sign / 48.0);
+        table.weights[centre] -= sign / 48.0;
+    }
+    table.sizes.push_back(int(table.indices.size()) - table.offsets.back());
+}
+
+bool anyNetworkEdge(const Topology& t) {
+    for (int e = 0; e < t.numEdges(); ++e)
+        if (isNetworkEdge(t, e)) return true;
+    return false;
+}
+
+std::size_t countNetworkEdges(const Topology& t) {
+    std::size_t count = 0;
+    for (int e = 0; e < t.numEdges(); ++e) count += isNetworkEdge(t, e) ? 1 : 0;
+    return count;
+}
+
 }  // namespace
 
-StencilTableD unzipStencils(const Topology& t, Piece piece) {
-    const double sign = piece == Piece::Triangle ? 1.0 : -1.0;
-    StencilTableD table;
-    table.numSourceVertices = t.numVertices;
-    table.sizes.reserve(t.numVertices);
-    table.offsets.reserve(t.numVertices);
-    for (int v = 0; v < t.numVertices; ++v) {
-        table.offsets.push_back(int(table.indices.size()));
-        table.indices.push_back(v);
-        table.weights.push_back(1.0);
-        const int centre = int(table.weights.size()) - 1;
-        if (keepsOnePosition(t, v)) {
-            table.sizes.push_back(1);
-            continue;
-        }
-        for (int e : t.edgesOfVertex(v)) {
-            if (!isNetworkEdge(t, e)) continue;
-            table.indices.push_back(t.otherVertex(e, v));
-            table.weights.push_back(sign / 48.0);
-            table.weights[centre] -= sign / 48.0;
-        }
-        table.sizes.push_back(int(table.indices.size()) - table.offsets.back());
+UnzippedCopies unzipCopies(const Topology& t) {
+    UnzippedCopies u;
+    if (!anyNetworkEdge(t)) return u;  // a pure level: nothing splits
+    // Which vertices split, each flagged by its own task; then their rows numbered in vertex order.
+    assignFresh(u.splitting, std::size_t(t.numVertices), 0);
+    forEach(t.numVertices, [&](int v) {
+        if (keepsOnePosition(t, v)) return;
+        for (int e : t.edgesOfVertex(v))
+            if (isNetworkEdge(t, e)) {
+                u.splitting[v] = 1;
+                return;
+            }
+    });
+    resizeFresh(u.rowOf, std::size_t(t.numVertices));
+    int rows = 0;
+    for (int v = 0; v < t.numVertices; ++v) u.rowOf[v] = u.splitting[v] ? rows++ : -1;
+    for (Piece piece : {Piece::Triangle, Piece::Quad}) {
+        StencilTableD& table = piece == Piece::Triangle ? u.triangle : u.quad;
+        table.numSourceVertices = t.numVertices;
+        table.sizes.reserve(rows);
+        table.offsets.reserve(rows);
+        for (int v = 0; v < t.numVertices; ++v)
+            if (u.splitting[v]) appendCopy(t, v, piece, table);
     }
-    return table;
+    return u;
+}
+
+std::size_t unzipBytesBound(const Topology& t) {
+    // Each network edge puts an entry in the rows of both its ends; a splitting vertex has one.
+    const std::size_t edges = t.edgeFlags.empty() ? edgeCountBound(t) : countNetworkEdges(t);
+    if (edges == 0) return 0;
+    const std::size_t rows = std::min<std::size_t>(std::size_t(t.numVertices), 2 * edges);
+    const std::size_t entries = rows + 2 * edges;
+    return std::size_t(t.numVertices) * (1 + sizeof(int)) + 2 * (rows * 2 * sizeof(int) + entries * (sizeof(int) + sizeof(double)));
 }
 
 }  // namespace v0

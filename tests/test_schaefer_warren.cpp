@@ -44,6 +44,12 @@ std::map<int, double> row(const StencilTableD& table, int i) {
     return w;
 }
 
+// Vertex v's copy for a piece: its row, or v itself where it does not split.
+std::map<int, double> copyRow(const UnzippedCopies& copies, Piece piece, int v) {
+    if (!copies.splits(v)) return {{v, 1.0}};
+    return row(copies.of(piece), copies.rowOf[size_t(v)]);
+}
+
 // Largest |a - b| over the union of the supports (missing entries are 0).
 double rowDistance(const std::map<int, double>& a, const std::map<int, double>& b) {
     double d = 0;
@@ -117,13 +123,18 @@ int findVertex(const std::vector<float>& xyz, double x, double y, double z) {
 
 // Every row of both copy tables against the closed form over the independently found network.
 void expectAllRowsClosedForm(const Topology& t, const std::vector<std::vector<int>>& network, const std::string& what) {
+    const UnzippedCopies copies = unzipCopies(t);
+    ASSERT_EQ(copies.splitting.size(), size_t(t.numVertices)) << what;
+    ASSERT_EQ(copies.rowOf.size(), size_t(t.numVertices)) << what;
+    int splitting = 0;
+    for (int v = 0; v < t.numVertices; ++v) splitting += copies.splits(v) ? 1 : 0;
     for (Piece piece : {Piece::Triangle, Piece::Quad}) {
-        const StencilTableD table = unzipStencils(t, piece);
-        ASSERT_EQ(table.sizes.size(), size_t(t.numVertices)) << what;
+        const StencilTableD& table = copies.of(piece);
+        ASSERT_EQ(table.sizes.size(), size_t(splitting)) << what;
         ASSERT_EQ(table.numSourceVertices, t.numVertices) << what;
         int bad = 0;
         for (int v = 0; v < t.numVertices; ++v) {
-            const auto got = row(table, v), want = expectedCopy(v, network[size_t(v)], piece);
+            const auto got = copyRow(copies, piece, v), want = expectedCopy(v, network[size_t(v)], piece);
             if (rowDistance(got, want) > 1e-15 && ++bad <= 5)
                 ADD_FAILURE() << what << (piece == Piece::Triangle ? " v_t" : " v_q") << " of vertex " << v << " ("
                               << network[size_t(v)].size() << " network edges): got" << describe(got) << ", want"
@@ -145,7 +156,7 @@ TEST(Unzip, TwoNetworkEdgesOnSplitPlane) {
     const io::ObjMesh mesh = io::readObj(meshPath("mixed/split_plane.obj"));
     Refiner refiner(mesh.descriptor(), mesh.applyTags(schemeOptions(Scheme::SchaeferWarren)));
     const Topology& t = refiner.level(0);
-    const StencilTableD tri = unzipStencils(t, Piece::Triangle), quad = unzipStencils(t, Piece::Quad);
+    const UnzippedCopies copies = unzipCopies(t);
     int checked = 0;
     for (int y = 1; y <= 7; ++y) {
         const int v = findVertex(mesh.positions, 0, y, 0), up = findVertex(mesh.positions, 0, y + 1, 0),
@@ -155,7 +166,7 @@ TEST(Unzip, TwoNetworkEdgesOnSplitPlane) {
         ASSERT_GE(down, 0);
         const std::map<int, double> wantT{{down, 1.0 / 48}, {v, 23.0 / 24}, {up, 1.0 / 48}};
         const std::map<int, double> wantQ{{down, -1.0 / 48}, {v, 25.0 / 24}, {up, -1.0 / 48}};
-        const auto gotT = row(tri, v), gotQ = row(quad, v);
+        const auto gotT = copyRow(copies, Piece::Triangle, v), gotQ = copyRow(copies, Piece::Quad, v);
         EXPECT_LE(rowDistance(gotT, wantT), 1e-15) << "U_t at (0, " << y << "):" << describe(gotT);
         EXPECT_LE(rowDistance(gotQ, wantQ), 1e-15) << "U_q at (0, " << y << "):" << describe(gotQ);
         ++checked;
@@ -172,10 +183,14 @@ TEST(Unzip, TwoNetworkEdgesOnSplitPlane) {
         }
     EXPECT_EQ(onNetwork, 9);
     expectAllRowsClosedForm(t, network, "split_plane");
-    int identity = 0;
+    // Only they have rows: every other vertex keeps one position (its copies are itself).
+    int splitting = 0;
     for (int v = 0; v < t.numVertices; ++v)
-        if (rowDistance(row(tri, v), {{v, 1.0}}) == 0.0 && rowDistance(row(quad, v), {{v, 1.0}}) == 0.0) ++identity;
-    EXPECT_EQ(identity, mesh.numVertices() - 9) << "non-network vertices must keep one position (identity row)";
+        if (copies.splits(v)) {
+            ++splitting;
+            EXPECT_FALSE(network[size_t(v)].empty()) << "vertex " << v << " splits off the network";
+        }
+    EXPECT_EQ(splitting, 9);
 }
 
 // checker_cube: the quad faces x = −1, y = −1, z = −1 meet the triangulated faces x = +1,
@@ -196,15 +211,15 @@ TEST(Unzip, CheckerCubeHexagon) {
         const size_t want = (v == allQuads || v == allTris) ? 0 : 2;
         EXPECT_EQ(network[size_t(v)].size(), want) << "vertex " << v;
     }
-    const StencilTableD tri = unzipStencils(t, Piece::Triangle), quad = unzipStencils(t, Piece::Quad);
+    const UnzippedCopies copies = unzipCopies(t);
     for (int v = 0; v < mesh.numVertices(); ++v) {
         if (network[size_t(v)].empty()) continue;
         const int a = network[size_t(v)][0], b = network[size_t(v)][1];
-        EXPECT_LE(rowDistance(row(tri, v), {{a, 1.0 / 48}, {v, 23.0 / 24}, {b, 1.0 / 48}}), 1e-15) << v;
-        EXPECT_LE(rowDistance(row(quad, v), {{a, -1.0 / 48}, {v, 25.0 / 24}, {b, -1.0 / 48}}), 1e-15) << v;
+        EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, v), {{a, 1.0 / 48}, {v, 23.0 / 24}, {b, 1.0 / 48}}), 1e-15) << v;
+        EXPECT_LE(rowDistance(copyRow(copies, Piece::Quad, v), {{a, -1.0 / 48}, {v, 25.0 / 24}, {b, -1.0 / 48}}), 1e-15) << v;
     }
-    EXPECT_EQ(rowDistance(row(tri, allQuads), {{allQuads, 1.0}}), 0.0);
-    EXPECT_EQ(rowDistance(row(quad, allTris), {{allTris, 1.0}}), 0.0);
+    EXPECT_EQ(rowDistance(copyRow(copies, Piece::Triangle, allQuads), {{allQuads, 1.0}}), 0.0);
+    EXPECT_EQ(rowDistance(copyRow(copies, Piece::Quad, allTris), {{allTris, 1.0}}), 0.0);
     expectAllRowsClosedForm(t, network, "checker_cube");
 }
 
@@ -222,10 +237,10 @@ TEST(Unzip, ThreeAndFourNetworkEdges) {
     {
         Refiner refiner(fan.descriptor(), schemeOptions(Scheme::SchaeferWarren));
         const Topology& t = refiner.level(0);
-        EXPECT_LE(rowDistance(row(unzipStencils(t, Piece::Triangle), 0),
+        EXPECT_LE(rowDistance(copyRow(unzipCopies(t), Piece::Triangle, 0),
                               {{0, 15.0 / 16}, {2, 1.0 / 48}, {3, 1.0 / 48}, {4, 1.0 / 48}}),
                   1e-15);
-        EXPECT_LE(rowDistance(row(unzipStencils(t, Piece::Quad), 0),
+        EXPECT_LE(rowDistance(copyRow(unzipCopies(t), Piece::Quad, 0),
                               {{0, 17.0 / 16}, {2, -1.0 / 48}, {3, -1.0 / 48}, {4, -1.0 / 48}}),
                   1e-15);
         expectAllRowsClosedForm(t, networkNeighbours(fan.numVertices, fan.faceSizes, fan.faceVerts), "open QTQT fan");
@@ -238,8 +253,8 @@ TEST(Unzip, ThreeAndFourNetworkEdges) {
         wantT[p] = 1.0 / 48;
         wantQ[p] = -1.0 / 48;
     }
-    EXPECT_LE(rowDistance(row(unzipStencils(t, Piece::Triangle), ring.center), wantT), 1e-15);
-    EXPECT_LE(rowDistance(row(unzipStencils(t, Piece::Quad), ring.center), wantQ), 1e-15);
+    EXPECT_LE(rowDistance(copyRow(unzipCopies(t), Piece::Triangle, ring.center), wantT), 1e-15);
+    EXPECT_LE(rowDistance(copyRow(unzipCopies(t), Piece::Quad, ring.center), wantQ), 1e-15);
     expectAllRowsClosedForm(t, networkNeighbours(ring.mesh.numVertices, ring.mesh.faceSizes, ring.mesh.faceVerts),
                             "closed QTQT ring");
 }
@@ -261,14 +276,14 @@ TEST(Unzip, InfinitelySharpSeamEdgesAreNotInTheNetwork) {
         ASSERT_GE(e, 0);
         const bool infinite = sharpness >= 10.0f;
         EXPECT_EQ(isNetworkEdge(t, e), !infinite) << "sharpness " << sharpness;
-        const StencilTableD tri = unzipStencils(t, Piece::Triangle), quad = unzipStencils(t, Piece::Quad);
+        const UnzippedCopies copies = unzipCopies(t);
         if (infinite) {
-            EXPECT_LE(rowDistance(row(tri, a), {{below, 1.0 / 48}, {a, 47.0 / 48}}), 1e-15) << describe(row(tri, a));
-            EXPECT_LE(rowDistance(row(quad, a), {{below, -1.0 / 48}, {a, 49.0 / 48}}), 1e-15) << describe(row(quad, a));
-            EXPECT_LE(rowDistance(row(tri, b), {{above, 1.0 / 48}, {b, 47.0 / 48}}), 1e-15) << describe(row(tri, b));
+            EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, a), {{below, 1.0 / 48}, {a, 47.0 / 48}}), 1e-15) << describe(copyRow(copies, Piece::Triangle, a));
+            EXPECT_LE(rowDistance(copyRow(copies, Piece::Quad, a), {{below, -1.0 / 48}, {a, 49.0 / 48}}), 1e-15) << describe(copyRow(copies, Piece::Quad, a));
+            EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, b), {{above, 1.0 / 48}, {b, 47.0 / 48}}), 1e-15) << describe(copyRow(copies, Piece::Triangle, b));
         } else {
-            EXPECT_LE(rowDistance(row(tri, a), {{below, 1.0 / 48}, {a, 23.0 / 24}, {b, 1.0 / 48}}), 1e-15);
-            EXPECT_LE(rowDistance(row(quad, b), {{a, -1.0 / 48}, {b, 25.0 / 24}, {above, -1.0 / 48}}), 1e-15);
+            EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, a), {{below, 1.0 / 48}, {a, 23.0 / 24}, {b, 1.0 / 48}}), 1e-15);
+            EXPECT_LE(rowDistance(copyRow(copies, Piece::Quad, b), {{a, -1.0 / 48}, {b, 25.0 / 24}, {above, -1.0 / 48}}), 1e-15);
         }
         expectAllRowsClosedForm(
             t, networkNeighbours(mesh.numVertices(), mesh.faceSizes, mesh.faceVerts, mesh.creasePairs, mesh.creaseSharpness),
@@ -496,6 +511,10 @@ TEST(SchaeferWarrenVsStamLoop, EqualOnPureMeshes) {
         sl.refineUniform(c.level - 1, TopologyDetail::Full);  // level c.level - 1 is a parent below
         double weights = 0;
         for (int L = 1; L <= c.level; ++L) {
+            // A pure level splits no vertex: no copy rows, no per-vertex array.
+            const UnzippedCopies copies = unzipCopies(sw.level(L - 1));
+            EXPECT_TRUE(copies.splitting.empty() && copies.rowOf.empty() && copies.triangle.sizes.empty() && copies.quad.sizes.empty())
+                << c.mesh << " level " << L - 1;
             const StencilTableD a = doubleLevelTable(sw, L), b = doubleLevelTable(sl, L);
             ASSERT_EQ(a.sizes.size(), b.sizes.size());
             for (size_t i = 0; i < a.sizes.size(); ++i)

@@ -11,22 +11,19 @@
 
 #include "far/internal/stam_loop.h"
 #include "far/internal/stencil_table_double.h"
+#include "far/internal/unzip.h"
 
 namespace quadtri {
 inline namespace v0 {
 
-// What every mask of a level reads: each vertex's copies in the unzipped pieces (as stencils over
-// the level's vertices) and which faces have a vertex on the network. Built once per level and
-// shared, read-only, by the threads building its masks.
+// What every mask of a level reads: each vertex's copies in the unzipped pieces (rows only for
+// the vertices that split) and which faces have such a vertex. Built once per level and shared,
+// read-only, by the threads building its masks; empty on a level without network edges.
 struct UnzippedLevel : SchemeLevel {
     explicit UnzippedLevel(const Topology& topology);
 
-    StencilTableD triangleCopies, quadCopies;
-    // Per vertex: its copies are more than itself (it has network edges). Most vertices of a
-    // level past the first have none, and a mask reads their copies (itself, weight 1) without
-    // the tables' four rows.
-    std::vector<uint8_t> vertexSplits;
-    std::vector<uint8_t> faceTouches;  // per face: one of its vertices has network edges
+    UnzippedCopies copies;
+    std::vector<uint8_t> faceTouches;  // per face: one of its vertices splits (empty where none does)
 };
 
 class SchaeferWarrenMasks : public StamLoopMasks {
@@ -45,7 +42,7 @@ protected:
 private:
     // Whether a child's mask reads an unzipped copy: only then does it differ from Stam-Loop's
     // (which is cheaper to build), i.e. when a face around it has a vertex on the network.
-    bool touchesFace(int face) const { return u_.faceTouches[face] != 0; }
+    bool touchesFace(int face) const { return !u_.faceTouches.empty() && u_.faceTouches[face] != 0; }
     bool touchesEdge(int edge) const;
     bool touchesVertex(int vertex) const;
 

@@ -3,7 +3,9 @@
 // piece is subdivided on its own and the averaging pass zips the seam closed, C2 across it.
 #pragma once
 
-#include <quadtri/far/stencil_table.h>
+#include <cstdint>
+#include <vector>
+
 #include <quadtri/far/topology.h>
 #include "far/internal/stencil_table_double.h"
 
@@ -16,11 +18,32 @@ enum class Piece { Triangle, Quad };
 // infinitely sharp. Boundaries, non-manifold and infinitely sharp edges are never unzipped.
 bool isNetworkEdge(const Topology& topology, int edge);
 
-// Vertex v's copy for `piece`, one stencil per vertex of the level, over the level's vertices:
+// The two copies of every vertex of a level:
 //   v_t = v + (1/48) Σ_k (w_k − v),   v_q = v − (1/48) Σ_k (w_k − v),
-// w_k the far ends of v's network edges (α = ½ in the paper's family). Off the network a copy
-// is v itself, and so is it at a crease or corner vertex with a semi-sharp crease (unzip.cpp).
-StencilTableD unzipStencils(const Topology& topology, Piece piece);
+// w_k the far ends of v's network edges (α = ½ in the paper's family). Off the network both
+// copies are v itself, and so are they at a crease or corner vertex with a semi-sharp crease
+// (unzip.cpp). Only the vertices that split have rows: the network is a set of curves, so past
+// the first level or two they are a small part of a level, and a pure triangle or quad level has
+// none (whole tables, a row per vertex, were a fifth of a pure mesh's build).
+struct UnzippedCopies {
+    // Per vertex: 1 where it splits. A mask asks this of every point it reads (tens of times), so
+    // it is a byte: the rows (below) are read for the few that split.
+    std::vector<std::uint8_t> splitting;
+    // Per vertex: its row in both tables, or -1 where its copies are itself.
+    std::vector<int> rowOf;
+    // A row per splitting vertex, in vertex order, over the level's vertices.
+    StencilTableD triangle, quad;
+    // All three empty where no vertex of the level splits.
+
+    bool splits(int v) const { return !splitting.empty() && splitting[v]; }
+    const StencilTableD& of(Piece piece) const { return piece == Piece::Triangle ? triangle : quad; }
+};
+
+UnzippedCopies unzipCopies(const Topology& topology);
+
+// Bytes unzipCopies may take for a level (SchemeRules::extraLevelBytes); `topology` may hold its
+// faces only (a looser bound then).
+std::size_t unzipBytesBound(const Topology& topology);
 
 }  // namespace v0
 }  // namespace quadtri
