@@ -31,20 +31,21 @@ bool keepsOnePosition(const Topology& t, int v) {
     return sharp >= 2 && semiSharp;
 }
 
-// Appends vertex v's copy for `piece`: v first, then its network neighbours in incidence order.
-void appendCopy(const Topology& t, int v, Piece piece, StencilTableD& table) {
+// Writes vertex v's copy for `piece` into its row, sized already: v first, then its network
+// neighbours in incidence order.
+void writeCopy(const Topology& t, int v, Piece piece, int row, StencilTableD& table) {
     const double sign = piece == Piece::Triangle ? 1.0 : -1.0;
-    table.offsets.push_back(int(table.indices.size()));
-    table.indices.push_back(v);
-    table.weights.push_back(1.0);
-    const std::size_t centre = table.weights.size() - 1;
+    int* indices = table.indices.data() + table.offsets[row];
+    double* weights = table.weights.data() + table.offsets[row];
+    indices[0] = v;
+    weights[0] = 1.0;
+    int k = 1;
     for (int e : t.edgesOfVertex(v)) {
         if (!isNetworkEdge(t, e)) continue;
-        table.indices.push_back(t.otherVertex(e, v));
-        table.weights.push_back(sign / 48.0);
-        table.weights[centre] -= sign / 48.0;
+        indices[k] = t.otherVertex(e, v);
+        weights[k++] = sign / 48.0;
+        weights[0] -= sign / 48.0;
     }
-    table.sizes.push_back(int(table.indices.size()) - table.offsets.back());
 }
 
 bool anyNetworkEdge(const Topology& t) {
@@ -64,27 +65,50 @@ std::size_t countNetworkEdges(const Topology& t) {
 UnzippedCopies unzipCopies(const Topology& t) {
     UnzippedCopies u;
     if (!anyNetworkEdge(t)) return u;  // a pure level: nothing splits
-    // Which vertices split, each flagged by its own task; then their rows numbered in vertex order.
-    assignFresh(u.splitting, std::size_t(t.numVertices), 0);
-    forEach(t.numVertices, [&](int v) {
-        if (keepsOnePosition(t, v)) return;
-        for (int e : t.edgesOfVertex(v))
-            if (isNetworkEdge(t, e)) {
-                u.splitting[v] = 1;
-                return;
-            }
-    });
+    // Each vertex's network edges counted by its own task (a vertex that keeps one position has
+    // none that count), then the rows numbered and sized in vertex order, then written on the
+    // threads: arrays of their exact size, no growth.
     resizeFresh(u.rowOf, std::size_t(t.numVertices));
+    forEach(t.numVertices, [&](int v) {
+        int count = 0;
+        if (!keepsOnePosition(t, v))
+            for (int e : t.edgesOfVertex(v)) count += isNetworkEdge(t, e) ? 1 : 0;
+        u.rowOf[v] = count;
+    });
     int rows = 0;
-    for (int v = 0; v < t.numVertices; ++v) u.rowOf[v] = u.splitting[v] ? rows++ : -1;
-    for (Piece piece : {Piece::Triangle, Piece::Quad}) {
-        StencilTableD& table = piece == Piece::Triangle ? u.triangle : u.quad;
-        table.numSourceVertices = t.numVertices;
-        table.sizes.reserve(rows);
-        table.offsets.reserve(rows);
-        for (int v = 0; v < t.numVertices; ++v)
-            if (u.splitting[v]) appendCopy(t, v, piece, table);
+    std::size_t entries = 0;
+    for (int v = 0; v < t.numVertices; ++v)
+        if (u.rowOf[v] > 0) {
+            ++rows;
+            entries += 1 + std::size_t(u.rowOf[v]);
+        }
+    assignFresh(u.splitting, std::size_t(t.numVertices), 0);
+    for (StencilTableD* table : {&u.triangle, &u.quad}) {
+        table->numSourceVertices = t.numVertices;
+        table->sizes.resize(rows);
+        table->offsets.resize(rows);
+        resizeFresh(table->indices, entries);
+        resizeFresh(table->weights, entries);
     }
+    for (int v = 0, row = 0, offset = 0; v < t.numVertices; ++v) {
+        const int count = u.rowOf[v];
+        if (count == 0) {
+            u.rowOf[v] = -1;
+            continue;
+        }
+        u.splitting[v] = 1;
+        for (StencilTableD* table : {&u.triangle, &u.quad}) {
+            table->sizes[row] = 1 + count;
+            table->offsets[row] = offset;
+        }
+        u.rowOf[v] = row++;
+        offset += 1 + count;
+    }
+    forEach(t.numVertices, [&](int v) {
+        if (!u.splitting[v]) return;
+        writeCopy(t, v, Piece::Triangle, u.rowOf[v], u.triangle);
+        writeCopy(t, v, Piece::Quad, u.rowOf[v], u.quad);
+    });
     return u;
 }
 
