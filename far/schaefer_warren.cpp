@@ -51,12 +51,11 @@ void SchaeferWarrenMasks::flushCopies() {
             acc_.add(c.vertex, c.weight);
             continue;
         }
-        const StencilTableD& table = u_.copies.of(c.quad ? Piece::Quad : Piece::Triangle);
         // The copy's bounds read once: the accumulator's int stores could otherwise change them.
         const int row = u_.copies.rowOf[c.vertex];
-        const int first = table.offsets[row], last = first + table.sizes[row];
-        const int* indices = table.indices.data();
-        const double* weights = table.weights.data();
+        const int first = u_.copies.offsets[row], last = u_.copies.offsets[row + 1];
+        const int* indices = u_.copies.indices.data();
+        const double* weights = u_.copies.weightsOf(c.quad ? Piece::Quad : Piece::Triangle).data();
         for (int k = first; k < last; ++k) acc_.add(indices[k], c.weight * weights[k]);
     }
     copies_.clear();

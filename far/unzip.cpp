@@ -6,7 +6,6 @@
 #include "far/internal/for_each.h"
 #include "far/internal/fresh_pages.h"
 #include "far/internal/level_estimate.h"
-#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -31,27 +30,24 @@ bool keepsOnePosition(const Topology& t, int v) {
     return sharp >= 2 && semiSharp;
 }
 
-// Writes vertex v's copy for `piece` into its row, sized already: v first, then its network
-// neighbours in incidence order.
-void writeCopy(const Topology& t, int v, Piece piece, int row, StencilTableD& table) {
-    const double sign = piece == Piece::Triangle ? 1.0 : -1.0;
-    int* indices = table.indices.data() + table.offsets[row];
-    double* weights = table.weights.data() + table.offsets[row];
+// Writes row `row` (sized already): vertex v, then the far ends of its network edges in incidence
+// order, with each piece's weights.
+void writeRow(const Topology& t, int v, int row, UnzippedCopies& u) {
+    const std::size_t first = std::size_t(u.offsets[row]);
+    int* indices = u.indices.data() + first;
+    double* triangle = u.triangleWeights.data() + first;
+    double* quad = u.quadWeights.data() + first;
     indices[0] = v;
-    weights[0] = 1.0;
+    triangle[0] = quad[0] = 1.0;
     int k = 1;
     for (int e : t.edgesOfVertex(v)) {
         if (!isNetworkEdge(t, e)) continue;
         indices[k] = t.otherVertex(e, v);
-        weights[k++] = sign / 48.0;
-        weights[0] -= sign / 48.0;
+        triangle[k] = 1.0 / 48.0;
+        quad[k++] = -1.0 / 48.0;
+        triangle[0] -= 1.0 / 48.0;
+        quad[0] += 1.0 / 48.0;
     }
-}
-
-bool anyNetworkEdge(const Topology& t) {
-    for (int e = 0; e < t.numEdges(); ++e)
-        if (isNetworkEdge(t, e)) return true;
-    return false;
 }
 
 std::size_t countNetworkEdges(const Topology& t) {
@@ -64,7 +60,7 @@ std::size_t countNetworkEdges(const Topology& t) {
 
 UnzippedCopies unzipCopies(const Topology& t) {
     UnzippedCopies u;
-    if (!anyNetworkEdge(t)) return u;  // a pure level: nothing splits
+    if (countNetworkEdges(t) == 0) return u;  // a pure level: nothing splits
     // Each vertex's network edges counted by its own task (a vertex that keeps one position has
     // none that count), then the rows numbered and sized in vertex order, then written on the
     // threads: arrays of their exact size, no growth.
@@ -75,39 +71,24 @@ UnzippedCopies unzipCopies(const Topology& t) {
             for (int e : t.edgesOfVertex(v)) count += isNetworkEdge(t, e) ? 1 : 0;
         u.rowOf[v] = count;
     });
-    int rows = 0;
-    std::size_t entries = 0;
-    for (int v = 0; v < t.numVertices; ++v)
-        if (u.rowOf[v] > 0) {
-            ++rows;
-            entries += 1 + std::size_t(u.rowOf[v]);
-        }
     assignFresh(u.splitting, std::size_t(t.numVertices), 0);
-    for (StencilTableD* table : {&u.triangle, &u.quad}) {
-        table->numSourceVertices = t.numVertices;
-        table->sizes.resize(rows);
-        table->offsets.resize(rows);
-        resizeFresh(table->indices, entries);
-        resizeFresh(table->weights, entries);
-    }
-    for (int v = 0, row = 0, offset = 0; v < t.numVertices; ++v) {
+    u.offsets.push_back(0);
+    for (int v = 0; v < t.numVertices; ++v) {
         const int count = u.rowOf[v];
         if (count == 0) {
             u.rowOf[v] = -1;
             continue;
         }
         u.splitting[v] = 1;
-        for (StencilTableD* table : {&u.triangle, &u.quad}) {
-            table->sizes[row] = 1 + count;
-            table->offsets[row] = offset;
-        }
-        u.rowOf[v] = row++;
-        offset += 1 + count;
+        u.rowOf[v] = int(u.offsets.size()) - 1;
+        u.offsets.push_back(u.offsets.back() + 1 + count);
     }
+    const std::size_t entries = std::size_t(u.offsets.back());
+    resizeFresh(u.indices, entries);
+    resizeFresh(u.triangleWeights, entries);
+    resizeFresh(u.quadWeights, entries);
     forEach(t.numVertices, [&](int v) {
-        if (!u.splitting[v]) return;
-        writeCopy(t, v, Piece::Triangle, u.rowOf[v], u.triangle);
-        writeCopy(t, v, Piece::Quad, u.rowOf[v], u.quad);
+        if (u.splitting[v]) writeRow(t, v, u.rowOf[v], u);
     });
     return u;
 }
@@ -118,7 +99,8 @@ std::size_t unzipBytesBound(const Topology& t) {
     if (edges == 0) return 0;
     const std::size_t rows = std::min<std::size_t>(std::size_t(t.numVertices), 2 * edges);
     const std::size_t entries = rows + 2 * edges;
-    return std::size_t(t.numVertices) * (1 + sizeof(int)) + 2 * (rows * 2 * sizeof(int) + entries * (sizeof(int) + sizeof(double)));
+    return std::size_t(t.numVertices) * (1 + sizeof(int)) + (rows + 1) * sizeof(int) +
+           entries * (sizeof(int) + 2 * sizeof(double));
 }
 
 }  // namespace v0

@@ -47,7 +47,12 @@ std::map<int, double> row(const StencilTableD& table, int i) {
 // Vertex v's copy for a piece: its row, or v itself where it does not split.
 std::map<int, double> copyRow(const UnzippedCopies& copies, Piece piece, int v) {
     if (!copies.splits(v)) return {{v, 1.0}};
-    return row(copies.of(piece), copies.rowOf[size_t(v)]);
+    const int r = copies.rowOf[size_t(v)];
+    const std::vector<double>& weights = copies.weightsOf(piece);
+    std::map<int, double> w;
+    for (int k = copies.offsets[size_t(r)]; k < copies.offsets[size_t(r) + 1]; ++k)
+        w[copies.indices[size_t(k)]] += weights[size_t(k)];
+    return w;
 }
 
 // Largest |a - b| over the union of the supports (missing entries are 0).
@@ -128,10 +133,10 @@ void expectAllRowsClosedForm(const Topology& t, const std::vector<std::vector<in
     ASSERT_EQ(copies.rowOf.size(), size_t(t.numVertices)) << what;
     int splitting = 0;
     for (int v = 0; v < t.numVertices; ++v) splitting += copies.splits(v) ? 1 : 0;
+    ASSERT_EQ(copies.offsets.size(), size_t(splitting) + 1) << what;
+    ASSERT_EQ(copies.indices.size(), size_t(copies.offsets.back())) << what;
     for (Piece piece : {Piece::Triangle, Piece::Quad}) {
-        const StencilTableD& table = copies.of(piece);
-        ASSERT_EQ(table.sizes.size(), size_t(splitting)) << what;
-        ASSERT_EQ(table.numSourceVertices, t.numVertices) << what;
+        ASSERT_EQ(copies.weightsOf(piece).size(), copies.indices.size()) << what;
         int bad = 0;
         for (int v = 0; v < t.numVertices; ++v) {
             const auto got = copyRow(copies, piece, v), want = expectedCopy(v, network[size_t(v)], piece);
@@ -215,8 +220,10 @@ TEST(Unzip, CheckerCubeHexagon) {
     for (int v = 0; v < mesh.numVertices(); ++v) {
         if (network[size_t(v)].empty()) continue;
         const int a = network[size_t(v)][0], b = network[size_t(v)][1];
-        EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, v), {{a, 1.0 / 48}, {v, 23.0 / 24}, {b, 1.0 / 48}}), 1e-15) << v;
-        EXPECT_LE(rowDistance(copyRow(copies, Piece::Quad, v), {{a, -1.0 / 48}, {v, 25.0 / 24}, {b, -1.0 / 48}}), 1e-15) << v;
+        EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, v), {{a, 1.0 / 48}, {v, 23.0 / 24}, {b, 1.0 / 48}}), 1e-15)
+            << v;
+        EXPECT_LE(rowDistance(copyRow(copies, Piece::Quad, v), {{a, -1.0 / 48}, {v, 25.0 / 24}, {b, -1.0 / 48}}), 1e-15)
+            << v;
     }
     EXPECT_EQ(rowDistance(copyRow(copies, Piece::Triangle, allQuads), {{allQuads, 1.0}}), 0.0);
     EXPECT_EQ(rowDistance(copyRow(copies, Piece::Quad, allTris), {{allTris, 1.0}}), 0.0);
@@ -278,9 +285,11 @@ TEST(Unzip, InfinitelySharpSeamEdgesAreNotInTheNetwork) {
         EXPECT_EQ(isNetworkEdge(t, e), !infinite) << "sharpness " << sharpness;
         const UnzippedCopies copies = unzipCopies(t);
         if (infinite) {
-            EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, a), {{below, 1.0 / 48}, {a, 47.0 / 48}}), 1e-15) << describe(copyRow(copies, Piece::Triangle, a));
-            EXPECT_LE(rowDistance(copyRow(copies, Piece::Quad, a), {{below, -1.0 / 48}, {a, 49.0 / 48}}), 1e-15) << describe(copyRow(copies, Piece::Quad, a));
-            EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, b), {{above, 1.0 / 48}, {b, 47.0 / 48}}), 1e-15) << describe(copyRow(copies, Piece::Triangle, b));
+            const auto triA = copyRow(copies, Piece::Triangle, a), quadA = copyRow(copies, Piece::Quad, a),
+                       triB = copyRow(copies, Piece::Triangle, b);
+            EXPECT_LE(rowDistance(triA, {{below, 1.0 / 48}, {a, 47.0 / 48}}), 1e-15) << describe(triA);
+            EXPECT_LE(rowDistance(quadA, {{below, -1.0 / 48}, {a, 49.0 / 48}}), 1e-15) << describe(quadA);
+            EXPECT_LE(rowDistance(triB, {{above, 1.0 / 48}, {b, 47.0 / 48}}), 1e-15) << describe(triB);
         } else {
             EXPECT_LE(rowDistance(copyRow(copies, Piece::Triangle, a), {{below, 1.0 / 48}, {a, 23.0 / 24}, {b, 1.0 / 48}}), 1e-15);
             EXPECT_LE(rowDistance(copyRow(copies, Piece::Quad, b), {{a, -1.0 / 48}, {b, 25.0 / 24}, {above, -1.0 / 48}}), 1e-15);
@@ -513,7 +522,8 @@ TEST(SchaeferWarrenVsStamLoop, EqualOnPureMeshes) {
         for (int L = 1; L <= c.level; ++L) {
             // A pure level splits no vertex: no copy rows, no per-vertex array.
             const UnzippedCopies copies = unzipCopies(sw.level(L - 1));
-            EXPECT_TRUE(copies.splitting.empty() && copies.rowOf.empty() && copies.triangle.sizes.empty() && copies.quad.sizes.empty())
+            EXPECT_TRUE(copies.splitting.empty() && copies.rowOf.empty() && copies.offsets.empty() &&
+                        copies.indices.empty() && copies.triangleWeights.empty() && copies.quadWeights.empty())
                 << c.mesh << " level " << L - 1;
             const StencilTableD a = doubleLevelTable(sw, L), b = doubleLevelTable(sl, L);
             ASSERT_EQ(a.sizes.size(), b.sizes.size());

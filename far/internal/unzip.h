@@ -3,11 +3,11 @@
 // piece is subdivided on its own and the averaging pass zips the seam closed, C2 across it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include <quadtri/far/topology.h>
-#include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -29,14 +29,19 @@ struct UnzippedCopies {
     // Per vertex: 1 where it splits. A mask asks this of every point it reads (tens of times), so
     // it is a byte: the rows (below) are read for the few that split.
     std::vector<std::uint8_t> splitting;
-    // Per vertex: its row in both tables, or -1 where its copies are itself.
+    // Per vertex: its row, or -1 where its copies are itself.
     std::vector<int> rowOf;
-    // A row per splitting vertex, in vertex order, over the level's vertices.
-    StencilTableD triangle, quad;
-    // All three empty where no vertex of the level splits.
+    // Row r, one per splitting vertex in vertex order: entries [offsets[r], offsets[r + 1]), the
+    // vertex first, then the far ends of its network edges. Both copies read the same sources;
+    // each piece has its own weights.
+    std::vector<int> offsets, indices;
+    std::vector<double> triangleWeights, quadWeights;
+    // All of them empty where no vertex of the level splits.
 
     bool splits(int v) const { return !splitting.empty() && splitting[v]; }
-    const StencilTableD& of(Piece piece) const { return piece == Piece::Triangle ? triangle : quad; }
+    const std::vector<double>& weightsOf(Piece piece) const {
+        return piece == Piece::Triangle ? triangleWeights : quadWeights;
+    }
 };
 
 UnzippedCopies unzipCopies(const Topology& topology);
