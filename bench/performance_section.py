@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
-"""Writes README.md's measured Performance figures from a quadtri-bench JSON file.
+"""Writes the measured performance figures from a quadtri-bench JSON file: every figure into
+docs/performance.md, and a headline table of a few rows into README.md.
 
     build/bin/quadtri-bench --json bench.json
-    python3 bench/performance_section.py bench.json [--readme README.md] [--note TEXT]
+    python3 bench/performance_section.py bench.json --readme README.md --doc docs/performance.md [--note TEXT]
 
-Replaces what lies between the two marker lines in the README (BEGIN and END below), so that
-rerunning it after a new bench run replaces the section. Every number written comes from the
-JSON; ratios are OpenSubdiv / quadtri (higher is better for quadtri), each stated like for like:
-threads, table kind and floats a vertex. The whole frame comes first (the headline: the goal's
-figures, then a row per cage, level and evaluator). Standard library only.
+Each file has its own pair of marker lines (BEGIN / END for the figures, HEADLINE_BEGIN /
+HEADLINE_END for the README's table); what lies between them is replaced, so rerunning it after a
+new bench run replaces the section and never appends. Every number written comes from the JSON;
+ratios are OpenSubdiv / quadtri (higher is better for quadtri), each stated like for like:
+threads, table kind and floats a vertex. The whole frame comes first (the goal's figures, then a
+row per cage, level and evaluator). Standard library only.
 """
 
 import argparse
@@ -17,6 +19,9 @@ import sys
 
 BEGIN = "<!-- performance-figures:begin (written by bench/performance_section.py; edits here are overwritten) -->"
 END = "<!-- performance-figures:end -->"
+HEADLINE_BEGIN = "<!-- performance-headline:begin (written by bench/performance_section.py; edits here are overwritten) -->"
+HEADLINE_END = "<!-- performance-headline:end -->"
+COMMAND = "python3 bench/performance_section.py bench.json --readme README.md --doc docs/performance.md"
 
 
 def fmt(v):
@@ -387,7 +392,7 @@ def section(r, note):
         f"Measured {r['date']} with `{r['command']}` on {r['cpu']}, {r['threads']} threads (oneTBB's concurrency;"
         f" OpenSubdiv's OpenMP set to the same){'; ' + note if note else ''}. Each time is the median of"
         f" {r['repetitions']} repetitions after a warm-up, the run's fastest and slowest in brackets; written by"
-        " `python3 bench/performance_section.py bench.json`.",
+        f" `{COMMAND}`.",
         "",
         f"memcpy in the same run (bytes read + written): 256 MiB {m['gbps_1t']:.1f} GB/s on 1 thread,"
         f" {m['gbps_all']:.1f} GB/s on {r['threads']}.",
@@ -442,25 +447,102 @@ def case_tables(r):
     return lines
 
 
+def headline(r, note):
+    """README's table: a few rows, each one figure of the run (none where the run lacks it)."""
+    n = r["threads"]
+    rows = []
+    frames = r.get("frame_cases", [])
+    if frames:
+        goal_level = 3 if any(c["level"] == 3 for c in frames) else max(c["level"] for c in frames)
+        for c in (c for c in frames if not c["osd"] and c["level"] == goal_level):
+            tbb, cpu = fastest_frame(c["quadtri"], ("tbb",)), fastest_frame(c["quadtri"], ("cpu",))
+            what = (f"Whole frame: `{c['mesh']}` ({c['faces']} faces, {c['scheme']}) skinned, level {c['level']}'s"
+                    f" {c['points']} limit points and normals")
+            if tbb:
+                rows.append(f"| {what}, oneTBB on {n} threads | **{fps(tbb)} fps** ({fmt(tbb['frame_ms']['median'])} ms) |"
+                            " quadtri alone (OpenSubdiv has no mixed scheme) |")
+            if cpu:
+                rows.append(f"| the same frame on one thread | {fps(cpu)} fps ({fmt(cpu['frame_ms']['median'])} ms) | |")
+        at = [c for c in frames if c["osd"] and c["level"] == goal_level]
+        if at:
+            names = ", ".join(f"`{m}`" for m in sorted({c["mesh"] for c in at}))
+
+            def frame_ratio(c, evaluator):
+                return osd_frame(c, evaluator)["frame_ms"]["median"] / fastest_frame(c["quadtri"], (evaluator,))["frame_ms"]["median"]
+
+            rows.append(f"| Whole frame on the pure cages ({names}), level {goal_level}, quadtri on {n} threads |"
+                        f" **{span([frame_ratio(c, 'tbb') for c in at])}x** | OpenSubdiv's best frame on any evaluator |")
+            rows.append(f"| the same, quadtri on one thread | {span([frame_ratio(c, 'cpu') for c in at])}x |"
+                        " OpenSubdiv's best serial frame |")
+    osd_cases = [c for c in r["cases"] if c["osd"]]
+    deep = [c for c in osd_cases if c["level"] >= 3] or osd_cases
+    if deep:
+        where = "levels >= 3" if any(c["level"] >= 3 for c in osd_cases) else "every level run"
+        tori = ", ".join(f"`{m}`" for m in sorted({c["mesh"] for c in deep}))
+        rows.append(f"| Stencil evaluation, one thread ({tori}, {where}) |"
+                    f" {span([osd_best(c['osd'], SERIAL)[1] / c['quadtri']['eval_serial_ms']['median'] for c in deep])}x |"
+                    " OpenSubdiv's best serial way |")
+        rows.append(f"| Stencil evaluation, {n} threads (the same cases) |"
+                    f" {span([osd_best(c['osd'])[1] / c['quadtri']['eval_threaded_ms']['median'] for c in deep])}x |"
+                    " OpenSubdiv's best way on any evaluator |")
+        fact = [c for c in deep if c["quadtri"].get("build_factorized_1t_ms")]
+        if fact:
+            rows.append("| Factorized table build, topology included, one thread (the same cases) |"
+                        f" {span([c['osd']['build_factorized_ms']['median'] / c['quadtri']['build_factorized_1t_ms']['median'] for c in fact])}x |"
+                        " OpenSubdiv's `StencilTableFactory` |")
+        rows.append("| Per-level table bytes (the same cases) |"
+                    f" {span([c['quadtri']['table_bytes'] / c['osd']['table_bytes'] for c in deep])}x |"
+                    " OpenSubdiv's per-level tables (lower is better) |")
+    lines = [HEADLINE_BEGIN, ""]
+    if rows:
+        lines += ["| measured | quadtri | against (ratios: OpenSubdiv's time / quadtri's) |", "|---|---:|---|"] + rows
+    else:
+        lines += ["No frame or refinement cases in this run."]
+    lines += ["", f"Measured {r['date']} with `{r['command']}` on {r['cpu']}, {n} threads"
+              f"{'; ' + note if note else ''}; medians of {r['repetitions']} repetitions. Every figure, and how it"
+              f" is measured: [docs/performance.md](docs/performance.md). Written by `{COMMAND}`.", "", HEADLINE_END]
+    return "\n".join(lines) + "\n"
+
+
+def replace_between(path, begin_marker, end_marker, text):
+    """Writes `text` (which holds both markers) over the span between the markers in `path`;
+    returns False, saying why on stderr, when the file lacks them."""
+    with open(path) as f:
+        old = f.read()
+    begin, end = old.find(begin_marker), old.find(end_marker)
+    if begin < 0 or end < begin:
+        print(f"performance_section.py: {path} lacks the marker lines {begin_marker!r} ... {end_marker!r}",
+              file=sys.stderr)
+        return False
+    rest = old[end + len(end_marker):]
+    new = old[:begin] + text + (rest[1:] if rest.startswith("\n") else rest)
+    if new != old:
+        with open(path, "w") as f:
+            f.write(new)
+    return True
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("json", help="quadtri-bench --json output")
-    parser.add_argument("--readme", default="README.md")
+    parser.add_argument("--readme", default="README.md", help="the file that gets the headline table (default README.md)")
+    parser.add_argument("--doc", default="docs/performance.md",
+                        help="the file that gets every figure (default docs/performance.md)")
     parser.add_argument("--note", default="", help="a few words on the machine's state, written after the threads")
     args = parser.parse_args()
     with open(args.json) as f:
         result = json.load(f)
-    with open(args.readme) as f:
-        readme = f.read()
-    begin, end = readme.find(BEGIN), readme.find(END)
-    if begin < 0 or end < begin:
-        print(f"performance_section.py: {args.readme} lacks the marker lines {BEGIN!r} ... {END!r}", file=sys.stderr)
-        return 2
-    rest = readme[end + len(END):]
-    updated = readme[:begin] + section(result, args.note) + (rest[1:] if rest.startswith("\n") else rest)
-    with open(args.readme, "w") as f:
-        f.write(updated)
-    return 0
+    # Both files are checked for their markers before either is written.
+    for path, markers in ((args.doc, (BEGIN, END)), (args.readme, (HEADLINE_BEGIN, HEADLINE_END))):
+        with open(path) as f:
+            text = f.read()
+        if text.find(markers[0]) < 0 or text.find(markers[1]) < text.find(markers[0]):
+            print(f"performance_section.py: {path} lacks the marker lines {markers[0]!r} ... {markers[1]!r}",
+                  file=sys.stderr)
+            return 2
+    ok = replace_between(args.doc, BEGIN, END, section(result, args.note))
+    ok = replace_between(args.readme, HEADLINE_BEGIN, HEADLINE_END, headline(result, args.note)) and ok
+    return 0 if ok else 2
 
 
 if __name__ == "__main__":
