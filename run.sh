@@ -46,7 +46,7 @@ has_command() {
     "$BUILD_DIR/bin/quadtri" --help | grep -E "^ +$1 " >/dev/null  # grep reads it all: no SIGPIPE
 }
 
-# The README's pictures (tools/render_pictures.sh, `quadtri render`) into $BUILD_DIR/demo/.
+# The pictures of docs/rendering.md (tools/render_pictures.sh, `quadtri render`) into $BUILD_DIR/demo/.
 demo_pictures() {
     tools/render_pictures.sh "$BUILD_DIR/bin/quadtri" "$BUILD_DIR/demo"
 }

@@ -1,5 +1,5 @@
 // What the bench measures per case, and for the whole run; written out by report.cpp (the JSON
-// that bench/performance_section.py turns into README's Performance section).
+// that bench/performance_section.py turns into docs/performance.md and README's headline table).
 #pragma once
 
 #include <cstddef>
@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "bench/frame_figures.h"
-#include "bench/timing.h"
+#include "bench/measure/timing.h"
 
 namespace quadtri::bench {
 
 // Memory of one side of a case: the bytes its tables and vertex buffers hold by count, and the
 // most memory resident above what was resident when its untimed first run (build, buffers, one
-// evaluation each way) began, read from Linux's peak resident set (bench/peak_memory.h; absent
+// evaluation each way) began, read from Linux's peak resident set (bench/measure/peak_memory.h; absent
 // where the kernel cannot reset that peak).
 struct MemoryFigures {
     std::size_t tableBytes = 0;

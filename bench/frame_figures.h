@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/timing.h"
+#include "bench/measure/timing.h"
 
 namespace quadtri::bench {
 

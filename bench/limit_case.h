@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "bench/figures.h"
-#include "bench/torus.h"
+#include "bench/meshes/torus.h"
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/options.h>

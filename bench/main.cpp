@@ -26,14 +26,14 @@
 #include "bench/figures.h"
 #include "bench/frame_case.h"
 #include "bench/limit_case.h"
-#include "bench/memcpy_bandwidth.h"
-#include "bench/osd_case.h"
-#include "bench/osd_frame_case.h"
-#include "bench/osd_limit_case.h"
+#include "bench/measure/memcpy_bandwidth.h"
+#include "bench/opensubdiv/osd_case.h"
+#include "bench/opensubdiv/osd_frame_case.h"
+#include "bench/opensubdiv/osd_limit_case.h"
 #include "bench/quadtri_case.h"
 #include "bench/report.h"
-#include "bench/sphere.h"
-#include "bench/torus.h"
+#include "bench/meshes/sphere.h"
+#include "bench/meshes/torus.h"
 #include "tools/obj_io.h"
 #ifdef QUADTRI_BENCH_VULKAN
 #include "bench/vulkan_case.h"
@@ -114,7 +114,7 @@ std::vector<CaseSpec> caseList(bool quick) {
 // Limit cases: the 100x100 tori, quads under Catmull-Clark and triangles under Loop on both sides
 // (the same schemes OpenSubdiv runs, so that the limit points agree), mixed under Schaefer-Warren
 // quadtri alone; levels 2-4 (--quick: 2). Nearly every vertex of the mixed torus is near a seam,
-// its masks come from the locally refined patches of far/limit_deeper.cpp (about 1 s a table at
+// its masks come from the locally refined patches of far/limit/limit_deeper.cpp (about 1 s a table at
 // level 2), and its level-4 factorized table passes the memory budget: the chain is timed there.
 std::vector<CaseSpec> limitCaseList(bool quick) {
     std::vector<CaseSpec> cases;
@@ -301,7 +301,7 @@ int usage(const char* message) {
                  "               frames: torus100_quad, torus71_tri, mixed_limb), e.g. to profile it\n"
                  "  --keep-freed-memory  glibc keeps what both libraries free for their next builds\n"
                  "               (mallopt: blocks up to 256 MiB from its heap, 1 GiB of free heap kept),\n"
-                 "               as an engine that rebuilds often may set it (README, Using quadtri)\n";
+                 "               as an engine that rebuilds often may set it (docs/performance.md, Rebuilding often)\n";
     return message ? 2 : 0;
 }
 

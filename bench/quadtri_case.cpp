@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "bench/compare.h"
-#include "bench/peak_memory.h"
-#include "bench/timing.h"
+#include "bench/measure/peak_memory.h"
+#include "bench/measure/timing.h"
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/tbb_evaluator.h>
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "bench/figures.h"
-#include "bench/torus.h"
+#include "bench/meshes/torus.h"
 #include <quadtri/far/options.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/osd/stencil_runs.h>

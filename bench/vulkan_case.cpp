@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bench/timing.h"
+#include "bench/measure/timing.h"
 #include <quadtri/osd/vulkan_evaluator.h>
 
 namespace quadtri::bench {

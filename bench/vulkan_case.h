@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "bench/timing.h"
+#include "bench/measure/timing.h"
 #include <quadtri/far/refiner.h>
 #include <quadtri/osd/vulkan_context.h>
 

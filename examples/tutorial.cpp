@@ -1,6 +1,6 @@
 // quadtri in one page: analyse a mixed quad/triangle mesh once (at load time), then evaluate its
-// refined vertices (every frame, as the control points move). README.md, "Using quadtri in your
-// engine", walks through it. Built with the tools and run by ctest (`tutorial`).
+// refined vertices (every frame, as the control points move). docs/getting_started.md walks
+// through it. Built with the tools and run by ctest (`tutorial`).
 #include <quadtri/quadtri.h>
 
 #include <cstdio>

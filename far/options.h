@@ -12,7 +12,7 @@
 namespace quadtri {
 inline namespace v0 {
 
-// Each scheme's rules are registered in far/schemes.cpp; allSchemes() lists them.
+// Each scheme's rules are registered in far/schemes/schemes.cpp; allSchemes() lists them.
 enum class Scheme {
     Bilinear,  // linear subdivision only: corners stay, edge midpoints, face centroids
     StamLoop,  // Stam-Loop quad/triangle: Catmull-Clark on quads, Loop on triangles, corrected mixed vertices
@@ -73,7 +73,7 @@ struct FVarChannel {
 constexpr float kInfiniteSharpness = 10.0f;
 
 // The mesh as plain arrays; nothing is copied until the Refiner is built. A face that repeats a
-// vertex is read as the simple loops it walks around (far/internal/face_loops.h): `4 3 5 5` is the
+// vertex is read as the simple loops it walks around (far/topology/face_loops.h): `4 3 5 5` is the
 // triangle `4 3 5`, `1 2 3 1 4 5` the triangles `1 2 3` and `1 4 5`, and `1 1 2 2` has no area
 // and is left out (Refiner::warnings() says so, except for collapsed edges like `4 3 5 5`).
 // Catmull-Clark, which must equal OpenSubdiv, keeps `4 3 5 5` as the quad it is, with an edge

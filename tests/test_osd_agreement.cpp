@@ -22,8 +22,8 @@
 #include <utility>
 #include <vector>
 
-#include "far/internal/refine_topology.h"
-#include "far/internal/scheme.h"
+#include "far/topology/refine_topology.h"
+#include "far/schemes/scheme.h"
 #include "tests/osd_reference.h"
 #include "tests/test_support.h"
 

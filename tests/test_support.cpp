@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <quadtri/osd/cpu_evaluator.h>
-#include "far/internal/refine_topology.h"
-#include "far/internal/rules.h"
-#include "far/internal/scheme.h"
+#include "far/topology/refine_topology.h"
+#include "far/tables/level_stencils.h"
+#include "far/schemes/scheme.h"
 #include "far/internal/stencil_table_double.h"
 
 namespace quadtri::test {

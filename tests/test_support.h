@@ -50,7 +50,7 @@ TopologyDescriptor withOneCrease(TopologyDescriptor desc);
 // Three stencils over four sources: 0.5 s0 + 0.5 s1, s3, 0.25 (s0 + s1 + s2 + s3).
 StencilTable handCheckedTable();
 
-// Float tables of smooth levels take the regular masks' short cut (far/internal/regular_masks.h):
+// Float tables of smooth levels take the regular masks' short cut (far/schemes/regular_masks.h):
 // checks (gtest EXPECTs) that levels 1-3 of `mesh` under `options` (the file's tags applied) are
 // exactly the tables the rules build (the double table, rounded and interned).
 void expectShortCutEqualsTheRules(const std::string& mesh, const Options& options);

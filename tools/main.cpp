@@ -60,7 +60,7 @@ std::string uvInterpolationHelp() {
 }
 
 void addMeshFlags(CLI::App& cmd, cli::MeshArgs& args) {
-    // The registered schemes (far/schemes.cpp), by name.
+    // The registered schemes (far/schemes/schemes.cpp), by name.
     static const std::map<std::string, Scheme> schemes = [] {
         std::map<std::string, Scheme> byName;
         for (Scheme scheme : allSchemes()) byName.emplace(toString(scheme), scheme);
@@ -231,7 +231,7 @@ void addViewFlags(CLI::App& cmd, view::ViewerArgs& args, const std::map<std::str
         ->check(oneOf(evaluators, "evaluator"));
     cmd.add_option("--texture", args.texture, "PNG or JPEG image for textured shading (default: a checker)");
     cmd.add_option("--script", args.script,
-                   "Run the commands of FILE (README, \"The viewer\"), one per rendered frame, then quit");
+                   "Run the commands of FILE (docs/viewer.md), one per rendered frame, then quit");
     cmd.add_option_function<std::string>(
            "--size", [&args](const std::string& s) { std::sscanf(s.c_str(), "%dx%d", &args.width, &args.height); },
            "Window size WxH (default 1280x800)")
@@ -319,7 +319,7 @@ int main(int argc, char** argv) {
 
     view::ViewerArgs viewer;
     CLI::App* viewCmd = app.add_subcommand("view", "Open the interactive viewer: cage and refined surface, sharpness "
-                                                   "editing, live schemes and evaluators (README, \"The viewer\")");
+                                                   "editing, live schemes and evaluators (docs/viewer.md)");
     addViewFlags(*viewCmd, viewer, evaluators);
 
     try {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the README's pictures with `quadtri render` (docs/rendering.md):
+# Renders the pictures of docs/rendering.md with `quadtri render` (docs/rendering.md):
 #   tools/render_pictures.sh [QUADTRI [OUT_DIR]]
 # QUADTRI defaults to build/bin/quadtri, OUT_DIR to docs/images. Needs a Vulkan device (lavapipe
 # will do: a few seconds per picture).

@@ -2,8 +2,7 @@
 // level's arrays, level 0's tags): the result is the same on any number of threads.
 #pragma once
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "far/internal/parallel.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -12,11 +11,11 @@ inline namespace v0 {
 // small level.
 constexpr int kForEachGrain = 4096;
 
-// body(i) for every i in [0, count), on oneTBB's threads.
+// body(i) for every i in [0, count), on the arena's threads.
 template <typename Body>
 void forEach(int count, const Body& body) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, count, kForEachGrain), [&](const tbb::blocked_range<int>& r) {
-        for (int i = r.begin(); i != r.end(); ++i) body(i);
+    parallel::forEachRange(0, count, kForEachGrain, [&](int first, int last) {
+        for (int i = first; i != last; ++i) body(i);
     });
 }
 

@@ -28,9 +28,9 @@ StencilTableD toDoubleTable(const StencilTable& table);
 // Bytes of a table's arrays.
 std::size_t bytesOf(const StencilTableD& table);
 
-struct KnownStencils;  // far/internal/regular_patches.h
+struct KnownStencils;  // far/tables/regular_patches.h
 
-// Stencils of a composition that templates give (far/internal/regular_patches.h), rather than
+// Stencils of a composition that templates give (far/tables/regular_patches.h), rather than
 // composition or the inner table.
 struct TemplatedStencils {
     // The result's: written from their templates instead of composed (their sources and weights
@@ -60,7 +60,7 @@ StencilTableD composeStencils(const StencilTable& outer, const StencilTable& inn
 
 // The same composition stored as float: bitwise toFloatTable(composeStencils(outer, inner,
 // maxBytes, templated)) with nothing left out, refused at the same point, without the double
-// result (far/compose_stencils.cpp).
+// result (far/tables/compose_stencils.cpp).
 StencilTable composeStencilsToFloat(const StencilTableD& outer, const StencilTableD& inner,
                                     std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTableD& inner,

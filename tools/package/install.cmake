@@ -1,6 +1,6 @@
 # cmake --install: the libraries, the public headers only (the QUADTRI_PUBLIC_HEADERS_* lists and
-# the generated version.h and quadtri.h; far/internal/, osd/internal/ and kernels/ stay out), the
-# CLI when built, a CMake package (find_package(quadtri CONFIG), targets quadtri::quadtri and
+# the generated version.h and quadtri.h; the private headers of far/*/, osd/internal/, osd/vulkan/
+# and kernels/ stay out), the CLI when built, a CMake package (find_package(quadtri CONFIG), targets quadtri::quadtri and
 # quadtri::vulkan) and pkg-config files. Included at the end of the top-level CMakeLists.txt.
 include(CMakePackageConfigHelpers)
 
@@ -46,6 +46,11 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/quadtriConfig.cmake ${CMAKE_CURRENT_BI
 file(RELATIVE_PATH QUADTRI_PC_TO_PREFIX /prefix/${QUADTRI_PKGCONFIG_DIR} /prefix)
 string(REGEX REPLACE "/$" "" QUADTRI_PC_TO_PREFIX "${QUADTRI_PC_TO_PREFIX}")
 set(QUADTRI_PC_PREFIX "\${pcfiledir}/${QUADTRI_PC_TO_PREFIX}")
+if(QUADTRI_WITH_TBB)
+  set(QUADTRI_PC_REQUIRES tbb)
+else()
+  set(QUADTRI_PC_REQUIRES "")
+endif()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/quadtri.pc.in ${CMAKE_CURRENT_BINARY_DIR}/quadtri.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/quadtri.pc DESTINATION ${QUADTRI_PKGCONFIG_DIR})
 if(QUADTRI_WITH_VULKAN)

@@ -1,6 +1,6 @@
 #include "tools/render/gpu_device.h"
 
-#include "osd/internal/vulkan_instance.h"
+#include "osd/vulkan/vulkan_instance.h"
 
 #include <cstdlib>
 

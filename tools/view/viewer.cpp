@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <ostream>
 
-#include "tools/view/cage_edits.h"
+#include "tools/view/core/cage_edits.h"
 
 namespace quadtri::view {
 

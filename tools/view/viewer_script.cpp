@@ -1,8 +1,8 @@
-// The script language's commands (tools/view/script.h) run against the viewer.
+// The script language's commands (tools/view/core/script.h) run against the viewer.
 #include <cmath>
 #include <cstdio>
 
-#include "tools/view/cage_edits.h"
+#include "tools/view/core/cage_edits.h"
 #include "tools/view/viewer.h"
 
 namespace quadtri::view {

@@ -1,0 +1,28 @@
+#include "bench/opensubdiv/osd_topology.h"
+
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+#include <opensubdiv/sdc/options.h>
+
+#include <stdexcept>
+
+namespace quadtri::bench {
+
+std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const ControlMesh& mesh, OsdScheme scheme) {
+    namespace Far = OpenSubdiv::Far;
+    namespace Sdc = OpenSubdiv::Sdc;
+    Far::TopologyDescriptor desc;
+    desc.numVertices = mesh.numVertices;
+    desc.numFaces = mesh.numFaces();
+    desc.numVertsPerFace = mesh.faceSizes.data();
+    desc.vertIndicesPerFace = mesh.faceVerts.data();
+    Sdc::Options sdc;
+    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+    const Sdc::SchemeType type = scheme == OsdScheme::Catmark ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP;
+    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(type, sdc)));
+    if (!refiner) throw std::runtime_error(mesh.name + ": OpenSubdiv refused the topology");
+    return refiner;
+}
+
+}  // namespace quadtri::bench

@@ -1,0 +1,222 @@
+#include <quadtri/osd/vulkan_limit_evaluator.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "osd/internal/eval_arguments.h"
+#include "osd/vulkan/vulkan_kernel.h"
+
+namespace quadtri {
+inline namespace v0 {
+
+namespace shaders {
+extern const uint32_t limit_eval_comp[];
+extern const std::size_t limit_eval_comp_words;
+extern const uint32_t mesh_normals_comp[];
+extern const std::size_t mesh_normals_comp_words;
+}  // namespace shaders
+
+namespace {
+
+constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+// table (5: sizes, offsets, the index pool, weight offsets, the weight pool), source, 4 outputs,
+// fallback table (4), then the two pools and the source again as texel buffers
+// (shaders/limit_eval.comp).
+constexpr std::size_t kFirstTexelBinding = 14;
+const std::vector<VkDescriptorType> kLimitBindings = {kStorage, kStorage, kStorage, kStorage, kStorage, kStorage,
+                                                      kStorage, kStorage, kStorage, kStorage, kStorage, kStorage,
+                                                      kStorage, kStorage, kTexels,  kTexels,  kTexels};
+constexpr uint32_t kLimitPushWords = 7;  // 5 float offsets, start, end
+const std::vector<VkDescriptorType> kNormalBindings(6, kStorage);  // table (4), source, destination
+constexpr uint32_t kNormalPushWords = 4;
+
+// Floats needed to hold `count` elements of `d` (0 when count is 0).
+std::size_t floatsNeeded(const BufferDescriptor& d, int count) {
+    return count <= 0 ? 0 : std::size_t(d.offset) + std::size_t(count - 1) * std::size_t(d.stride) + std::size_t(d.length);
+}
+
+void checkFits(const char* call, const char* which, const VulkanVertexBuffer* b, const BufferDescriptor& d, int count) {
+    if (b && floatsNeeded(d, count) > b->numFloats())
+        throw std::invalid_argument(std::string(call) + ": " + which + " buffer of " + std::to_string(b->numFloats()) +
+                                    " floats too small for " + std::to_string(count) + " elements");
+}
+
+VulkanBufferRef refOf(const VulkanVertexBuffer* b) { return {b ? b->buffer() : VK_NULL_HANDLE, 0}; }
+
+}  // namespace
+
+VulkanLimitEvaluator::VulkanLimitEvaluator(VulkanContext& ctx)
+    : ctx_(ctx),
+      limit_(std::make_unique<detail::VulkanKernel>(ctx, shaders::limit_eval_comp, shaders::limit_eval_comp_words,
+                                                    kLimitBindings, kLimitPushWords)),
+      normals_(std::make_unique<detail::VulkanKernel>(ctx, shaders::mesh_normals_comp, shaders::mesh_normals_comp_words,
+                                                      kNormalBindings, kNormalPushWords)),
+      unused_(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+      unusedIndexTexels_(ctx, unused_, VK_FORMAT_R32_SINT), unusedWeightTexels_(ctx, unused_, VK_FORMAT_R32_SFLOAT) {}
+
+VulkanLimitEvaluator::~VulkanLimitEvaluator() = default;
+
+void VulkanLimitEvaluator::resetDescriptorSets() {
+    limit_->resetSets(detail::Arena::Recorded);
+    normals_->resetSets(detail::Arena::Recorded);
+}
+
+void VulkanLimitEvaluator::resetWaited() {
+    limit_->resetSets(detail::Arena::Waited);
+    normals_->resetSets(detail::Arena::Waited);
+}
+
+void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const VulkanBufferRef& src,
+                                       const BufferDescriptor& srcDesc, const VulkanBufferRef (&outputs)[4],
+                                       const BufferDescriptor* const (&descs)[4], const VulkanLimitStencilTable& table,
+                                       const VulkanMeshNormalTable* fallback, int start, int end) {
+    bool present[4];
+    for (int k = 0; k < 4; ++k) present[k] = outputs[k].buffer != VK_NULL_HANDLE;
+    if (!detail::checkLimitArguments(src.buffer != VK_NULL_HANDLE, srcDesc, {present[0], *descs[0]},
+                                     {present[1], *descs[1]}, {present[2], *descs[2]}, {present[3], *descs[3]},
+                                     table.numStencils(), table.numSourceVertices(),
+                                     fallback ? fallback->numVertices() : -1, start, end))
+        return;
+    const char* call = "EvalLimitStencils";
+    if (!cmd) throw std::invalid_argument("EvalLimitStencils: null command buffer");
+    if (table.device() != ctx_.device() || (fallback && fallback->device() != ctx_.device()))
+        throw std::invalid_argument("EvalLimitStencils: the table belongs to another VkDevice");
+
+    const detail::BoundBuffer source = detail::bindAligned(ctx_, src.buffer, src.byteOffset, srcDesc, call);
+    std::vector<VkDescriptorBufferInfo> infos = {
+        {table.sizes(), 0, VK_WHOLE_SIZE},         {table.offsets(), 0, VK_WHOLE_SIZE},
+        {table.indices(), 0, VK_WHOLE_SIZE},       {table.weightOffsets(), 0, VK_WHOLE_SIZE},
+        {table.weights(), 0, VK_WHOLE_SIZE},       source.info};
+    // The source's texel view starts at the buffer's byte 0, its storage binding at source.info.
+    const std::size_t texelOffset = src.byteOffset / 4 + std::size_t(srcDesc.offset);
+    const bool sourceTexels = src.texels != VK_NULL_HANDLE && texelOffset <= std::size_t(INT32_MAX);
+    std::vector<uint32_t> words{sourceTexels ? uint32_t(texelOffset) : source.floatOffset};
+    std::vector<int32_t> constants{srcDesc.length, srcDesc.stride};
+    int32_t mask = 0;
+    for (int k = 0; k < 4; ++k) {
+        if (!present[k]) {
+            infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
+            words.push_back(0);
+            constants.push_back(0);
+            continue;
+        }
+        const detail::BoundBuffer out = detail::bindAligned(ctx_, outputs[k].buffer, outputs[k].byteOffset, *descs[k], call);
+        infos.push_back(out.info);
+        words.push_back(out.floatOffset);
+        constants.push_back(descs[k]->stride);
+        mask |= 1 << k;
+    }
+    const bool useFallback = fallback && present[3];
+    if (useFallback) {
+        mask |= 16;
+        for (VkBuffer b : fallback->buffers()) infos.push_back({b, 0, VK_WHOLE_SIZE});
+    } else {
+        for (int k = 0; k < 4; ++k) infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
+    }
+    constants.push_back(mask);
+    const bool poolTexels = table.indexTexels() != VK_NULL_HANDLE;
+    constants.push_back(poolTexels);
+    constants.push_back(sourceTexels);
+    std::vector<VkBufferView> texels(kLimitBindings.size(), VK_NULL_HANDLE);
+    texels[kFirstTexelBinding] = poolTexels ? table.indexTexels() : unusedIndexTexels_.view();
+    texels[kFirstTexelBinding + 1] = poolTexels ? table.weightTexels() : unusedWeightTexels_.view();
+    texels[kFirstTexelBinding + 2] = sourceTexels ? src.texels : unusedWeightTexels_.view();
+    limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end,
+                   texels);
+}
+
+void VulkanLimitEvaluator::EvalLimitStencils(VkCommandBuffer cmd, const VulkanBufferRef& src,
+                                             const BufferDescriptor& srcDesc, const VulkanBufferRef& position,
+                                             const BufferDescriptor& positionDesc, const VulkanBufferRef& du,
+                                             const BufferDescriptor& duDesc, const VulkanBufferRef& dv,
+                                             const BufferDescriptor& dvDesc, const VulkanBufferRef& normal,
+                                             const BufferDescriptor& normalDesc, const VulkanLimitStencilTable& table,
+                                             const VulkanMeshNormalTable* fallback, int start, int end) {
+    const VulkanBufferRef outputs[4] = {position, du, dv, normal};
+    const BufferDescriptor* const descs[4] = {&positionDesc, &duDesc, &dvDesc, &normalDesc};
+    recordLimit(cmd, false, src, srcDesc, outputs, descs, table, fallback, start, end);
+}
+
+void VulkanLimitEvaluator::EvalLimitStencilsAndWait(
+    const VulkanVertexBuffer& src, const BufferDescriptor& srcDesc, const VulkanVertexBuffer* position,
+    const BufferDescriptor& positionDesc, const VulkanVertexBuffer* du, const BufferDescriptor& duDesc,
+    const VulkanVertexBuffer* dv, const BufferDescriptor& dvDesc, const VulkanVertexBuffer* normal,
+    const BufferDescriptor& normalDesc, const VulkanLimitStencilTable& table, const VulkanMeshNormalTable* fallback,
+    int start, int end) {
+    int last = end;
+    if (!detail::checkLimitArguments(true, srcDesc, {position != nullptr, positionDesc}, {du != nullptr, duDesc},
+                                     {dv != nullptr, dvDesc}, {normal != nullptr, normalDesc}, table.numStencils(),
+                                     table.numSourceVertices(), fallback ? fallback->numVertices() : -1, start, last))
+        return;
+    const char* call = "EvalLimitStencils";
+    checkFits(call, "source", &src, srcDesc, table.numSourceVertices());
+    checkFits(call, "position", position, positionDesc, last);
+    checkFits(call, "dU", du, duDesc, last);
+    checkFits(call, "dV", dv, dvDesc, last);
+    checkFits(call, "normal", normal, normalDesc, last);
+    const VulkanBufferRef outputs[4] = {refOf(position), refOf(du), refOf(dv), refOf(normal)};
+    const BufferDescriptor* const descs[4] = {&positionDesc, &duDesc, &dvDesc, &normalDesc};
+    try {
+        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+            recordLimit(cmd, true, {src.buffer(), 0, src.texels()}, srcDesc, outputs, descs, table, fallback, start, end);
+        });
+    } catch (...) {
+        resetWaited();
+        throw;
+    }
+    resetWaited();
+}
+
+void VulkanLimitEvaluator::recordNormals(VkCommandBuffer cmd, bool waited, const VulkanBufferRef& src,
+                                         const BufferDescriptor& srcDesc, const VulkanBufferRef& dst,
+                                         const BufferDescriptor& dstDesc, const VulkanMeshNormalTable& table, int start,
+                                         int end) {
+    if (!detail::checkMeshNormalArguments(src.buffer != VK_NULL_HANDLE, srcDesc, dst.buffer != VK_NULL_HANDLE, dstDesc,
+                                          table.numVertices(), start, end))
+        return;
+    const char* call = "EvalMeshNormals";
+    if (!cmd) throw std::invalid_argument("EvalMeshNormals: null command buffer");
+    if (table.device() != ctx_.device())
+        throw std::invalid_argument("EvalMeshNormals: the table belongs to another VkDevice");
+    const detail::BoundBuffer s = detail::bindAligned(ctx_, src.buffer, src.byteOffset, srcDesc, call);
+    const detail::BoundBuffer d = detail::bindAligned(ctx_, dst.buffer, dst.byteOffset, dstDesc, call);
+    std::vector<VkDescriptorBufferInfo> infos;
+    for (VkBuffer b : table.buffers()) infos.push_back({b, 0, VK_WHOLE_SIZE});
+    infos.push_back(s.info);
+    infos.push_back(d.info);
+    const std::vector<int32_t> constants{srcDesc.stride, dstDesc.stride};
+    normals_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants,
+                     {s.floatOffset, d.floatOffset}, start, end);
+}
+
+void VulkanLimitEvaluator::EvalMeshNormals(VkCommandBuffer cmd, const VulkanBufferRef& src,
+                                           const BufferDescriptor& srcDesc, const VulkanBufferRef& dst,
+                                           const BufferDescriptor& dstDesc, const VulkanMeshNormalTable& table,
+                                           int start, int end) {
+    recordNormals(cmd, false, src, srcDesc, dst, dstDesc, table, start, end);
+}
+
+void VulkanLimitEvaluator::EvalMeshNormalsAndWait(const VulkanVertexBuffer& src, const BufferDescriptor& srcDesc,
+                                                  const VulkanVertexBuffer& dst, const BufferDescriptor& dstDesc,
+                                                  const VulkanMeshNormalTable& table, int start, int end) {
+    int last = end;
+    if (!detail::checkMeshNormalArguments(true, srcDesc, true, dstDesc, table.numVertices(), start, last)) return;
+    checkFits("EvalMeshNormals", "source", &src, srcDesc, table.numVertices());
+    checkFits("EvalMeshNormals", "destination", &dst, dstDesc, last);
+    try {
+        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+            recordNormals(cmd, true, {src.buffer(), 0}, srcDesc, {dst.buffer(), 0}, dstDesc, table, start, end);
+        });
+    } catch (...) {
+        resetWaited();
+        throw;
+    }
+    resetWaited();
+}
+
+}  // namespace v0
+}  // namespace quadtri
