@@ -6,13 +6,14 @@
 #include <cstdint>
 #include <vector>
 
+#include <quadtri/export.h>
 #include <quadtri/far/level_faces.h>
 #include <quadtri/far/stencil_table.h>
 
 namespace quadtri {
 inline namespace v0 {
 
-struct DrawBuffers {
+struct QUADTRI_API DrawBuffers {
     // 3 per triangle, over the draw vertices, counter-clockwise as the faces: a quad (a, b, c, d)
     // is (a, b, c) and (a, c, d); a larger face (level 0 only) is the fan from its first corner.
     // Holes are left out.
@@ -39,7 +40,7 @@ struct DrawBuffers {
 // corner of `faces` in its corner order (LevelFaces::vertices()); a draw vertex is a distinct
 // (vertex, value of every channel) combination. `numValues` has each channel's number of values:
 // a value index outside [0, numValues) is a TopologyError naming the face.
-DrawBuffers buildDrawBuffers(const LevelFaces& faces, const std::vector<const int*>& cornerValues = {},
+QUADTRI_API DrawBuffers buildDrawBuffers(const LevelFaces& faces, const std::vector<const int*>& cornerValues = {},
                              const std::vector<int>& numValues = {});
 
 }  // namespace v0

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <vector>
 
+#include <quadtri/export.h>
 #include <quadtri/far/level_faces.h>
 
 namespace quadtri {
@@ -42,7 +43,7 @@ struct MeshNormalTable {
 
 // The table of one level's faces (refiner.faces(L)). Throws std::invalid_argument for a level of
 // more vertices than kCornerIndexMask.
-MeshNormalTable buildMeshNormalTable(const LevelFaces& faces);
+QUADTRI_API MeshNormalTable buildMeshNormalTable(const LevelFaces& faces);
 
 }  // namespace v0
 }  // namespace quadtri

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include <quadtri/export.h>
+
 namespace quadtri {
 inline namespace v0 {
 
@@ -106,7 +108,7 @@ struct TopologyDescriptor {
 // descriptor's arrays), the vertex it is about if any, and what is wrong. A file reader renders it
 // in the file's own numbering (line, 1-based OBJ indices); message() renders it 0-based:
 // "face 2: vertex 7 appears more than once".
-struct TopologyDiagnostic {
+struct QUADTRI_API TopologyDiagnostic {
     enum class Component { None, Face, Crease, Corner, Hole };
     Component component = Component::None;
     int index = -1;   // item index in the descriptor, or -1
@@ -119,7 +121,7 @@ struct TopologyDiagnostic {
 // Malformed topology or an unsatisfiable request. The message names the face, vertex or level;
 // diagnostic() says which input item is at fault, so that a file reader can point at the line
 // it came from.
-class TopologyError : public std::runtime_error {
+class QUADTRI_API TopologyError : public std::runtime_error {
 public:
     using Component = TopologyDiagnostic::Component;
     explicit TopologyError(const std::string& what) : std::runtime_error(what), diagnostic_{Component::None, -1, -1, what} {}
@@ -136,7 +138,7 @@ private:
 // The memory budget (Options::memoryBudgetBytes) refused a step before its allocations: `subject`
 // says which ("level 4", "the factorized stencils of level 4"), `needed` is what it would have
 // taken at least, counting what the Refiner already holds (`held`).
-class MemoryBudgetError : public TopologyError {
+class QUADTRI_API MemoryBudgetError : public TopologyError {
 public:
     MemoryBudgetError(std::string subject, std::size_t needed, std::size_t held, std::size_t budget);
     const std::string& subject() const { return subject_; }
@@ -149,21 +151,21 @@ private:
     std::size_t needed_, held_, budget_;
 };
 
-const char* toString(Scheme scheme);  // the scheme's name: "stam-loop"
+QUADTRI_API const char* toString(Scheme scheme);  // the scheme's name: "stam-loop"
 // Every scheme, in the order help texts list them; a one-line description of each; the scheme
 // of a name as toString spells it, or nullopt.
-const std::vector<Scheme>& allSchemes();
-const char* describe(Scheme scheme);
-std::optional<Scheme> schemeNamed(std::string_view name);
+QUADTRI_API const std::vector<Scheme>& allSchemes();
+QUADTRI_API const char* describe(Scheme scheme);
+QUADTRI_API std::optional<Scheme> schemeNamed(std::string_view name);
 // Whether Options::smoothTriangles applies to the scheme (catmull-clark); the Refiner refuses it
 // elsewhere.
-bool takesSmoothTriangles(Scheme scheme);
-const char* toString(BoundaryInterpolation boundary);
+QUADTRI_API bool takesSmoothTriangles(Scheme scheme);
+QUADTRI_API const char* toString(BoundaryInterpolation boundary);
 // The face-varying options by name ("corners-plus1"), every one in order, and back from a name.
-const char* toString(FVarLinearInterpolation interpolation);
-const std::vector<FVarLinearInterpolation>& allFVarLinearInterpolations();
-std::optional<FVarLinearInterpolation> fvarLinearInterpolationNamed(std::string_view name);
-const char* toString(CreaseMethod method);
+QUADTRI_API const char* toString(FVarLinearInterpolation interpolation);
+QUADTRI_API const std::vector<FVarLinearInterpolation>& allFVarLinearInterpolations();
+QUADTRI_API std::optional<FVarLinearInterpolation> fvarLinearInterpolationNamed(std::string_view name);
+QUADTRI_API const char* toString(CreaseMethod method);
 
 }  // namespace v0
 }  // namespace quadtri

@@ -18,6 +18,8 @@
 namespace quadtri {
 inline namespace v0 {
 
+using namespace internal;
+
 Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
     levels_.push_back(buildBaseTopology(desc, options, &warnings_));
     detail_.push_back(TopologyDetail::Full);

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include <quadtri/export.h>
 #include <quadtri/far/level_faces.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/options.h>
@@ -15,7 +16,9 @@
 namespace quadtri {
 inline namespace v0 {
 
-class FVarChannelRefinement;
+namespace internal {
+class FVarChannelRefinement;  // far/fvar/fvar_channel.h
+}
 
 // Whether refineUniform builds the per-level stencil table of each level it refines
 // (levelStencils). A caller that reads only tables over the control vertices (factorizedStencils,
@@ -28,7 +31,7 @@ enum class LevelTables {
     None,   // the levels refined by this call keep none (face-varying channels still keep theirs)
 };
 
-class Refiner {
+class QUADTRI_API Refiner {
 public:
     // Validates the descriptor (TopologyError on bad input) and builds level 0, with its
     // face-varying channels.
@@ -149,14 +152,14 @@ private:
     void completeLevel(int L);  // rebuilds a faces-only level in full
     void completeTable(int L);  // builds level L's per-level table where it has none, within the budget
     void checkLimitLevel(const char* what, int L) const;  // TopologyError unless 0 <= L <= maxLevel()
-    const FVarChannelRefinement& channel(int c) const;
+    const internal::FVarChannelRefinement& channel(int c) const;
 
     Options options_;
     std::vector<TopologyDiagnostic> warnings_;
     std::vector<Topology> levels_;
     std::vector<TopologyDetail> detail_;  // per level
     std::vector<std::optional<StencilTable>> levelTables_;  // per level 1..maxLevel(); none with LevelTables::None
-    std::vector<std::unique_ptr<FVarChannelRefinement>> fvar_;
+    std::vector<std::unique_ptr<internal::FVarChannelRefinement>> fvar_;
 };
 
 }  // namespace v0

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <quadtri/export.h>
 #include <quadtri/far/options.h>
 
 namespace quadtri {
@@ -108,17 +109,17 @@ enum class TopologyDetail {
 };
 
 // Bytes of a topology's arrays.
-std::size_t bytesOf(const Topology& topology);
+QUADTRI_API std::size_t bytesOf(const Topology& topology);
 
 // Per-vertex face-type counts: incident quad-like faces (4 or more corners) and triangles.
 struct VertexFaceCounts {
     int quads = 0;
     int triangles = 0;
 };
-VertexFaceCounts countVertexFaces(const Topology& topology, int vertex);
+QUADTRI_API VertexFaceCounts countVertexFaces(const Topology& topology, int vertex);
 
 // Edge joining vertices a and b, or -1.
-int findEdge(const Topology& topology, int a, int b);
+QUADTRI_API int findEdge(const Topology& topology, int a, int b);
 
 }  // namespace v0
 }  // namespace quadtri

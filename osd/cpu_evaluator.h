@@ -1,6 +1,7 @@
 // Serial evaluator: applies a StencilTable to any per-vertex float data.
 #pragma once
 
+#include <quadtri/export.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
@@ -10,7 +11,7 @@
 namespace quadtri {
 inline namespace v0 {
 
-class CpuEvaluator {
+class QUADTRI_API CpuEvaluator {
 public:
     // Evaluates stencils [start, end) of `table` (end < 0: up to the last stencil). Stencil i
     // writes destination element i, so a range fills exactly rows [start, end) of dst and leaves

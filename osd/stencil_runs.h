@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <vector>
 
+#include <quadtri/export.h>
 #include <quadtri/far/stencil_table.h>
 
 namespace quadtri {
@@ -37,7 +38,7 @@ struct StencilGroup {
     int weightOffset;
 };
 
-class StencilRuns {
+class QUADTRI_API StencilRuns {
 public:
     // Runs of at least this many stencils get an entry (an entry costs what two or three stencils'
     // arrays do, and the kernel's set-up for a run, its weights broadcast once, pays off over

@@ -2,6 +2,7 @@
 // oneTBB in the caller's task arena (its thread count); no global state.
 #pragma once
 
+#include <quadtri/export.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
@@ -11,7 +12,7 @@
 namespace quadtri {
 inline namespace v0 {
 
-class TbbEvaluator {
+class QUADTRI_API TbbEvaluator {
 public:
     // Same contract as CpuEvaluator::EvalStencils: stencils [start, end) (end < 0: all), stencil i
     // writes destination element i, src and dst must not overlap, std::invalid_argument on bad

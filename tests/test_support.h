@@ -9,7 +9,16 @@
 #include <quadtri/far/refiner.h>
 #include "tools/obj_io.h"
 
+namespace quadtri {
+inline namespace v0 {
+namespace internal {}
+}  // namespace v0
+}  // namespace quadtri
+
 namespace quadtri::test {
+
+// The tests read the analyzer's internals (quadtri::internal) as well as its public API.
+using namespace quadtri::internal;
 
 // Absolute path of a mesh under tests/meshes, e.g. meshPath("osd/catmark_cube.obj").
 std::string meshPath(const std::string& relative);

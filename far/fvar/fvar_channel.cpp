@@ -16,6 +16,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -478,5 +479,6 @@ std::size_t FVarChannelRefinement::estimateNextLevelBytes(const SchemeRules& rul
     return estimateLevelBytes(levels_.back().values, rules);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

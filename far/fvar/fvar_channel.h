@@ -18,6 +18,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 class SchemeRules;
 
@@ -92,5 +93,6 @@ private:
     std::vector<StencilTable> tables_;
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

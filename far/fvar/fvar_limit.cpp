@@ -8,6 +8,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // A value that matches its vertex keeps the value mesh's sharpness, which is the mesh's there, so
 // it takes its vertex's mask. Every other value is a corner or a crease of the value mesh:
@@ -68,5 +69,6 @@ LimitStencilTableD FVarChannelRefinement::limitStencils(int L, const Topology& l
     return out;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -6,6 +6,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // Items per task: enough work to amortise a task, few enough that both cores get a share of a
 // small level.
@@ -19,5 +20,6 @@ void forEach(int count, const Body& body) {
     });
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -22,6 +22,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 namespace parallel {
 
 #ifdef QUADTRI_HAVE_TBB
@@ -101,5 +102,6 @@ private:
 #endif
 
 }  // namespace parallel
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

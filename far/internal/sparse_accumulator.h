@@ -10,6 +10,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 class SparseAccumulator {
 public:
@@ -85,5 +86,6 @@ private:
     std::vector<double> weights_;
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

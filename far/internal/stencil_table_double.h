@@ -9,6 +9,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // A plain CSR table with double weights, one per entry: how the analyzer builds and composes
 // tables (stencil i's entries are [offsets[i], offsets[i] + sizes[i])).
@@ -68,5 +69,6 @@ StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTabl
 StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTable& inner,
                                     std::size_t maxBytes = ~std::size_t(0), const TemplatedStencils& templated = {});
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -12,6 +12,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -115,5 +116,6 @@ const LocalLimitMask& cachedLimit(const VertexConfiguration& c, const Options& o
     return cache.insert(key, analysed ? std::move(*analysed) : LocalLimitMask{});
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

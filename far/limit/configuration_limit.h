@@ -10,6 +10,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // The analysis of a configuration; nullopt where no ring neighbourhood up to kMaxLocalRings is
 // closed under the scheme's masks. dU × dV turns the way the configuration's faces are listed.
@@ -19,5 +20,6 @@ std::optional<LocalLimitMask> analyseConfiguration(const VertexConfiguration& co
 // with rings == 0 where there is none.
 const LocalLimitMask& cachedLimit(const VertexConfiguration& configuration, const Options& options, LimitMaskCache& cache);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

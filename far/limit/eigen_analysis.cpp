@@ -9,6 +9,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 std::optional<std::vector<double>> fixedLeftVector(const std::vector<double>& S, int n) {
     const int m = n + 1;
@@ -148,5 +149,6 @@ SubdominantSpace subdominantLeftSpace(const std::vector<double>& S, int n, const
     return out;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -8,6 +8,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // l with l S = l and Σ l = 1 (S n x n, row-major, rows summing to 1), from the bordered system
 // [Sᵀ − I, 1; 1ᵀ, 0] [l; μ] = [0; 1] by Gaussian elimination with partial pivoting; nullopt when
@@ -28,5 +29,6 @@ struct SubdominantSpace {
 };
 SubdominantSpace subdominantLeftSpace(const std::vector<double>& S, int n, const std::vector<double>& l0);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -8,6 +8,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -255,5 +256,6 @@ bool pureClosedForm(const LimitVertex& vertex, bool loopOnTriangles, LimitMask& 
     return true;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -7,6 +7,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 void catmullClarkLimit(const LimitVertex& vertex, LimitMask& out);
 void loopLimit(const LimitVertex& vertex, LimitMask& out);
@@ -22,5 +23,6 @@ bool ringFacesHave(const LimitVertex& vertex, int corners);
 // schemes' own (docs/limit.md). Returns false, writing nothing, elsewhere.
 bool pureClosedForm(const LimitVertex& vertex, bool loopOnTriangles, LimitMask& out);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -14,6 +14,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 void cutPatch(const Topology& t, int vertex, WalkScratch& scratch, PatchCut& cut) {
     for (std::vector<int>* a : {&cut.source, &cut.sizes, &cut.corners, &cut.creasePairs, &cut.holes, &cut.cornerVerts})
@@ -121,5 +122,6 @@ PatchStep refinePatch(const Topology& t, int vertex, const Options& options, Wal
     return refineCut(cut, options);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -13,6 +13,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // The faces within kPatchRings face rings of `vertex`, in the patch's own vertex numbering: what
 // refining it depends on, all of it, so that two cuts with equal keys refine alike, bit for bit.
@@ -42,5 +43,6 @@ void cutPatch(const Topology& level, int vertex, WalkScratch& scratch, PatchCut&
 PatchStep refineCut(const PatchCut& cut, const Options& options);
 PatchStep refinePatch(const Topology& level, int vertex, const Options& options, WalkScratch& scratch);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -16,6 +16,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -189,5 +190,6 @@ void limitFromLocalMatrix(const SchemeRules&, const LimitVertex& vertex, LimitMa
                cache, out);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

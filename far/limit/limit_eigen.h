@@ -20,6 +20,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 class SchemeRules;
 
@@ -131,5 +132,6 @@ struct EigenLimitReport {
 EigenLimitReport eigenLimit(const Topology& level, int vertex, const Options& options, int firstFace,
                             LimitMaskCache& cache, LimitMask& out);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -10,6 +10,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // A vertex's faces and edges in rotational order, counter-clockwise seen from outside (Topology
 // stores every face so, left-handed input reversed): face i lies between
@@ -107,5 +108,6 @@ struct LimitVertex {
     VertexRule rule;
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

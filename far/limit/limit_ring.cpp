@@ -7,6 +7,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -129,5 +130,6 @@ void RingStarts::descend(const Topology& parent, const ChildNumbering& numbering
     edgeFirst_ = std::move(edgeFirst);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -10,6 +10,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // Fills `ring` for vertex v of a level with full topology. An interior manifold vertex's ring
 // starts at `startFace` (one of its faces; -1: its lowest-numbered face), a boundary one at the
@@ -36,5 +37,6 @@ private:
     std::vector<int> edgeFirst_;    // per edge of the current level
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -11,6 +11,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // Per index below some bound (a level's vertices or faces): whether it was marked since the last
 // clear(), with an int beside the mark. clear() is a new stamp, not a pass over the array.
@@ -55,5 +56,6 @@ struct WalkScratch {
     std::vector<std::pair<int, int>> queue;  // (face, entry corner)
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -19,6 +19,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -318,5 +319,6 @@ std::size_t bytesOf(const LimitStencilTableD& table) {
            table.weights.size() * sizeof(double);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -13,6 +13,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // Plain CSR with three double weights per entry, interleaved (position, dU, dV) as in
 // LimitStencilTable, but nothing pooled: stencil i's entries are [offsets[i], offsets[i] + sizes[i]),
@@ -60,5 +61,6 @@ LimitStencilTable toFloatTable(const LimitStencilTableD& table);
 
 std::size_t bytesOf(const LimitStencilTableD& table);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

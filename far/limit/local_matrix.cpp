@@ -14,6 +14,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -180,5 +181,6 @@ std::optional<LocalMatrix> buildLocalMatrix(const VertexConfiguration& c, const 
     return std::nullopt;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

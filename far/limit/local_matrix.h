@@ -15,6 +15,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // What the local subdivision matrix of a vertex depends on once its neighbourhood has settled
 // into regular sectors (docs/limit_eigen.md, "Configurations").
@@ -79,5 +80,6 @@ struct LocalMatrix {
 constexpr int kMaxLocalRings = 4;
 std::optional<LocalMatrix> buildLocalMatrix(const VertexConfiguration& configuration, const Options& options);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

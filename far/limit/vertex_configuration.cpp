@@ -9,6 +9,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 std::string VertexConfiguration::key() const {
     std::string k;
@@ -200,5 +201,6 @@ Neighbourhood gatherNeighbourhood(const Topology& t, int v, int startFace, int r
     return n;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

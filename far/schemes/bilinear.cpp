@@ -5,6 +5,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -40,5 +41,6 @@ const SchemeRules& bilinearRules() {
     return rules;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

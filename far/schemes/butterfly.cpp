@@ -10,6 +10,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -376,5 +377,6 @@ const SchemeRules& catmarkButterflyRules() {
     return rules;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

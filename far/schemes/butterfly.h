@@ -23,6 +23,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 class CatmarkButterflyMasks : public StamLoopMasks {
 public:
@@ -87,5 +88,6 @@ private:
 
 const SchemeRules& catmarkButterflyRules();
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -14,6 +14,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -105,5 +106,6 @@ void CatmarkButterflyMasks::creaseVertex(int v, const float* edgeSharpness, doub
     addCurveMask(points, count, 0.0, true, acc_, scale);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

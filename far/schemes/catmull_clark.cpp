@@ -11,6 +11,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -77,5 +78,6 @@ const SchemeRules& catmullClarkRules() {
     return rules;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -4,6 +4,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 bool hasSharpness(const Topology& t) {
     return std::any_of(t.edgeSharpness.begin(), t.edgeSharpness.end(), isSharp) ||
@@ -55,5 +56,6 @@ float transitionWeight(float parentVertexSharpness, float childVertexSharpness, 
     return w > 1.0f ? 1.0f : w;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

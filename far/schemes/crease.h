@@ -8,6 +8,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 inline bool isSharp(float s) { return s > 0.0f; }
 inline bool isInfinite(float s) { return s >= kInfiniteSharpness; }
@@ -44,5 +45,6 @@ void childEdgeSharpnessAtVertex(const Topology& topology, int v, CreaseMethod me
 float transitionWeight(float parentVertexSharpness, float childVertexSharpness, int edgeCount,
                        const float* parentEdgeSharpness, const float* childEdgeSharpness);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -16,6 +16,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 class RegularMasks {
 public:
@@ -145,5 +146,6 @@ private:
     std::vector<int> weights_;  // per key
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -5,6 +5,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 UnzippedLevel::UnzippedLevel(const Topology& t) : copies(unzipCopies(t)) {
     if (copies.splitting.empty()) return;
@@ -184,5 +185,6 @@ const SchemeRules& schaeferWarrenRules() {
     return rules;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

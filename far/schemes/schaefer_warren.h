@@ -15,6 +15,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // What every mask of a level reads: each vertex's copies in the unzipped pieces (rows only for
 // the vertices that split) and which faces have such a vertex. Built once per level and shared,
@@ -73,5 +74,6 @@ private:
 
 const SchemeRules& schaeferWarrenRules();
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -22,6 +22,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // What a scheme computes once per level and shares, read-only, among the threads building the
 // level's masks (Schaefer-Warren's unzipped copies).
@@ -121,5 +122,6 @@ public:
 // The registry (schemes.cpp): the rules of a scheme, and every scheme in listing order.
 const SchemeRules& rulesOf(Scheme scheme);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

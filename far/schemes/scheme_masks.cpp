@@ -4,6 +4,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 void SchemeMasks::sharpEdgePoint(int e, double scale) {
     acc_.add(t_.edgeVerts[2 * e], 0.5 * scale);
@@ -26,5 +27,6 @@ void SchemeMasks::creaseVertexPoint(int v, const float* edgeSharpness, double sc
         if (isSharp(edgeSharpness[i])) acc_.add(t_.otherVertex(edges[i], v), 0.125 * scale);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -8,6 +8,9 @@
 namespace quadtri {
 inline namespace v0 {
 
+using namespace internal;
+
+namespace internal {
 // Each defined in its scheme's file.
 const SchemeRules& schaeferWarrenRules();
 const SchemeRules& stamLoopRules();
@@ -15,6 +18,7 @@ const SchemeRules& catmarkButterflyRules();
 const SchemeRules& bilinearRules();
 const SchemeRules& catmullClarkRules();
 const SchemeRules& loopRules();
+}  // namespace internal
 
 namespace {
 
@@ -40,7 +44,7 @@ const Registered* find(Scheme scheme) {
 
 }  // namespace
 
-const SchemeRules& rulesOf(Scheme scheme) {
+const SchemeRules& internal::rulesOf(Scheme scheme) {
     const Registered* r = find(scheme);
     if (!r) throw TopologyError("scheme " + std::to_string(int(scheme)) + " is not a registered scheme");
     return r->rules();

@@ -6,6 +6,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 double stamLoopEta(int nE, int nQ, int nT) {
     const double n = nE;
@@ -89,5 +90,6 @@ const SchemeRules& stamLoopRules() {
     return rules;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

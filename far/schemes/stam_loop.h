@@ -15,6 +15,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // η of the Stam-Loop correction v2 = v1 + η (v1 - v0) for a smooth vertex with nE incident
 // edges, nQ quad-like and nT triangular faces (docs/schemes/stam_loop.md, §3).
@@ -31,5 +32,6 @@ protected:
 
 const SchemeRules& stamLoopRules();
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -8,6 +8,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 bool isNetworkEdge(const Topology& t, int e) { return (t.edgeFlags[e] & kEdgeSeam) && !isInfinite(t.edgeSharpness[e]); }
 
@@ -102,5 +103,6 @@ std::size_t unzipBytesBound(const Topology& t) {
            entries * (sizeof(int) + 2 * sizeof(double));
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -11,6 +11,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 enum class Piece { Triangle, Quad };
 
@@ -50,5 +51,6 @@ UnzippedCopies unzipCopies(const Topology& topology);
 // faces only (a looser bound then).
 std::size_t unzipBytesBound(const Topology& topology);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

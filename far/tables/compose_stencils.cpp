@@ -22,6 +22,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -354,5 +355,6 @@ StencilTable composeStencilsToFloat(const StencilTable& outer, const StencilTabl
     return composeFloat(FloatOuter{outer}, FloatInner{inner}, maxBytes, templated);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -11,6 +11,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // What a composition may still allocate: the budget less what the Refiner holds, counting the
 // tables alive at each step; a refusal names `subject`.
@@ -33,5 +34,6 @@ private:
     std::size_t held_, budget_, used_ = 0;  // used: bytes of the double tables alive at this point
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

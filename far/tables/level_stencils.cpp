@@ -19,6 +19,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -226,5 +227,6 @@ template StencilTable buildLevelStencils<StencilTable>(const Topology&, const Ch
 template StencilTableD buildLevelStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&,
                                                          const std::vector<float>*, const std::vector<std::uint8_t>*);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -13,6 +13,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // Masks of the child vertices of `parent`, in the child order of `numbering` (which must split
 // triangles as options.scheme does).
@@ -31,5 +32,6 @@ Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering
                          const std::vector<float>* childEdgeSharpness = nullptr,
                          const std::vector<std::uint8_t>* wanted = nullptr);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

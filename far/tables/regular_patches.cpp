@@ -19,6 +19,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -332,5 +333,6 @@ std::size_t RegularPatches::bytes() const {
     return b;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

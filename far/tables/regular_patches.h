@@ -17,6 +17,8 @@ inline namespace v0 {
 
 class Refiner;
 
+namespace internal {
+
 // Stencils of one level known without composing: stencil i, where face[i] >= 0, is template
 // position[i] of that face's kind, its corners naming the face's patch vertices.
 struct KnownStencils {
@@ -100,5 +102,6 @@ private:
     KnownStencils known_[2];
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

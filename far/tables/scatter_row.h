@@ -11,6 +11,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 class ScatterRow {
 public:
@@ -76,5 +77,6 @@ private:
     int size_ = 0;
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -6,6 +6,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 StencilTable toFloatTable(const StencilTableD& d) {
     StencilTable out;
@@ -46,5 +47,6 @@ std::size_t bytesOf(const StencilTableD& t) {
     return (t.sizes.size() + t.offsets.size() + t.indices.size()) * sizeof(int) + t.weights.size() * sizeof(double);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -18,6 +18,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // Appends each accumulated mask to the table being built. The float table interns the mask's
 // weights in the level's pool, so identical masks share one copy; the double table (analysis
@@ -193,5 +194,6 @@ private:
     }
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -20,6 +20,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -392,5 +393,6 @@ LimitStencilTable composeChannelLimitTables(const FVarChannelRefinement& channel
         [&] { return composeLevelTables(L, budget, ChannelLevels{channel}); });
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -13,6 +13,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 class FVarChannelRefinement;
 
@@ -36,5 +37,6 @@ LimitStencilTable channelLimitTable(const FVarChannelRefinement& channel, int L,
 LimitStencilTable composeChannelLimitTables(const FVarChannelRefinement& channel, int L, const Options& options,
                                             CompositionBudget& budget);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

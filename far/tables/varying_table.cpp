@@ -8,6 +8,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -48,5 +49,6 @@ std::size_t varyingStencilBytes(const Topology& parent, const ChildNumbering& nu
     return stencils * 2 * sizeof(int) + entries * (sizeof(int) + sizeof(double));
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

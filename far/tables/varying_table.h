@@ -7,6 +7,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // The children of `parent` (in `numbering`'s order) as linear interpolations of its vertices:
 // a face point is its face's centroid, an edge point its edge's midpoint, a vertex point its
@@ -16,5 +17,6 @@ StencilTableD buildVaryingStencils(const Topology& parent, const ChildNumbering&
 // An upper bound of that table's bytes, for the memory budget, from the parent's counts alone.
 std::size_t varyingStencilBytes(const Topology& parent, const ChildNumbering& numbering);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -5,6 +5,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -75,5 +76,6 @@ std::vector<T> SequencePool<T>::take() {
 template class SequencePool<float>;
 template class SequencePool<int>;
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -9,6 +9,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // T is float (weights) or int (source indices).
 template <class T>
@@ -46,5 +47,6 @@ private:
 using WeightPool = SequencePool<float>;
 using IndexPool = SequencePool<int>;
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -2,6 +2,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 FaceLoops FaceLoopSplitter::split(const int* verts, int n, std::vector<int>& faceVerts, std::vector<int>& faceSizes,
                                   std::vector<int>* corners) {
@@ -55,5 +56,6 @@ FaceLoops FaceLoopSplitter::split(const int* verts, int n, std::vector<int>& fac
     return result;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -20,6 +20,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // What splitting one face did, for the warning that names it.
 struct FaceLoops {
@@ -53,5 +54,6 @@ private:
     CollapsedEdges collapsed_;
 };
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -4,6 +4,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 std::size_t edgeCountBound(const Topology& p) {
     return p.edgeVerts.empty() ? p.faceVerts.size() : std::size_t(p.numEdges());
@@ -37,5 +38,6 @@ std::size_t estimateLevelBytes(const Topology& p, const SchemeRules& rules) {
     return topologyBytes + tableBytes + outputBytes + scratchBytes + rules.extraLevelBytes(p);
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -7,6 +7,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // Edges of a level, or a bound when it holds its faces only (one per corner: an open mesh's
 // count).
@@ -21,5 +22,6 @@ inline std::size_t tableEntryBytes(std::size_t count) { return 2 * count * sizeo
 // (SchemeRules::extraLevelBytes). `parent` may hold its faces only (a looser bound then).
 std::size_t estimateLevelBytes(const Topology& parent, const SchemeRules& rules);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

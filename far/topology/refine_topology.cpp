@@ -9,6 +9,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 ChildNumbering numberChildren(const Topology& parent, TriangleSplit split) {
     ChildNumbering n;
@@ -373,5 +374,6 @@ Topology refineTopology(const Topology& parent, const ChildNumbering& numbering,
     return child;
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -9,6 +9,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // How a triangle of the parent level is split (SchemeRules::triangleSplit). Quads and n-gons
 // always become quads around a face point.
@@ -39,5 +40,6 @@ ChildNumbering numberChildren(const Topology& parent, TriangleSplit split = Tria
 Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod,
                         TopologyDetail detail = TopologyDetail::Full);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

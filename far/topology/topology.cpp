@@ -13,6 +13,8 @@
 namespace quadtri {
 inline namespace v0 {
 
+using namespace internal;
+
 const char* toString(BoundaryInterpolation boundary) {
     switch (boundary) {
     case BoundaryInterpolation::EdgeOnly: return "edge-only";
@@ -201,7 +203,7 @@ void flagVertices(Topology& t) {
 
 }  // namespace
 
-void buildIncidences(Topology& t) {
+void internal::buildIncidences(Topology& t) {
     const int nv = t.numVertices, ne = t.numEdges(), nf = t.numFaces();
     t.edgeFaceOffsets.assign(std::size_t(ne) + 1, 0);
     for (int e : t.faceEdges) ++t.edgeFaceOffsets[e + 1];
@@ -231,7 +233,7 @@ void buildIncidences(Topology& t) {
     }
 }
 
-void completeTopology(Topology& t) {
+void internal::completeTopology(Topology& t) {
     buildEdges(t);
     buildIncidences(t);
     flagEdges(t);
@@ -261,7 +263,7 @@ std::string describeLoops(const FaceLoops& loops) {
 
 }  // namespace
 
-Topology buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
+Topology internal::buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
                            std::vector<TopologyDiagnostic>* warnings) {
     validateDescriptor(desc);
     // Level 0 and its scratch: per vertex its incidence offsets, flags, sharpness and edge

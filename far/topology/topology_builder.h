@@ -8,6 +8,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 // Checks the descriptor (throws TopologyError naming the face or vertex) and builds level 0:
 // edges, incidences, sharpness, boundary / non-manifold / seam flags, holes (including the
@@ -28,5 +29,6 @@ void completeTopology(Topology& topology);
 // edgeVerts.
 void buildIncidences(Topology& topology);
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -10,6 +10,7 @@
 
 namespace quadtri {
 inline namespace v0 {
+namespace internal {
 
 namespace {
 
@@ -98,5 +99,6 @@ void validateDescriptor(const TopologyDescriptor& d) {
     }
 }
 
+}  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -3,6 +3,7 @@
 // and reject exactly the same calls with the same messages.
 #pragma once
 
+#include <quadtri/export.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
@@ -22,13 +23,13 @@ namespace detail {
 // std::invalid_argument on an invalid descriptor, differing source and destination lengths, a
 // range outside [0, numStencils] or start > end, and (only when the range is not empty) a
 // missing buffer. Returns false when [start, end) is empty: nothing to evaluate.
-bool checkEvalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
+QUADTRI_API bool checkEvalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
                         const BufferDescriptor& dstDesc, int numStencils, int start, int& end);
 
 // EvalMeshNormals over a table of `numVertices` vertices: valid descriptors of length 3 on both
 // sides, the range, and (only when the range is not empty) both buffers; end < 0 resolved.
 // Returns false when there is nothing to evaluate.
-bool checkMeshNormalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
+QUADTRI_API bool checkMeshNormalArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool dstPresent,
                               const BufferDescriptor& dstDesc, int numVertices, int start, int& end);
 
 // One optional output of EvalLimitStencils: absent (a null pointer or VkBuffer) means not
@@ -43,7 +44,7 @@ struct LimitOutputArgument {
 // least one output, a fallback table (fallbackVertices >= 0; -1 for none) over the limit table's
 // own sources and stencils, the range, and the source buffer when the range is not empty.
 // Returns false when there is nothing to evaluate.
-bool checkLimitArguments(bool srcPresent, const BufferDescriptor& srcDesc, const LimitOutputArgument& position,
+QUADTRI_API bool checkLimitArguments(bool srcPresent, const BufferDescriptor& srcDesc, const LimitOutputArgument& position,
                          const LimitOutputArgument& du, const LimitOutputArgument& dv,
                          const LimitOutputArgument& normal, int numStencils, int numSources, int fallbackVertices,
                          int start, int& end);
@@ -58,7 +59,7 @@ struct HostLimitCall {
     kernels::MeshNormalArrays fallbackArrays;
     kernels::LimitOutputs outputs;
 };
-bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+QUADTRI_API bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
                    const BufferDescriptor& positionDesc, float* dstDu, const BufferDescriptor& duDesc, float* dstDv,
                    const BufferDescriptor& dvDesc, float* dstNormal, const BufferDescriptor& normalDesc,
                    const LimitStencilTable& table, const MeshNormalTable* fallback, int start, int& end);
@@ -71,7 +72,7 @@ inline kernels::StencilArrays stencilArrays(const StencilTable& table) {
 
 // A StencilRuns' arrays as the kernel reads them; throws std::invalid_argument where its table's
 // stencil count changed since the runs were built (they would no longer cover it).
-kernels::StencilRunArrays stencilRunArrays(const StencilRuns& runs);
+QUADTRI_API kernels::StencilRunArrays stencilRunArrays(const StencilRuns& runs);
 
 inline kernels::LimitStencilArrays limitArrays(const LimitStencilTable& table) {
     return kernels::LimitStencilArrays{table.sizes.data(), table.offsets.data(), table.indices.data(),

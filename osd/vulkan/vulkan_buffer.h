@@ -4,13 +4,14 @@
 
 #include <vulkan/vulkan.h>
 
+#include <quadtri/export.h>
 #include <quadtri/osd/vulkan_context.h>
 #include <quadtri/osd/vulkan_memory.h>
 
 namespace quadtri {
 inline namespace v0 {
 
-class VulkanVertexBuffer {
+class QUADTRI_API VulkanVertexBuffer {
 public:
     // Zero-filled. Usable as a storage buffer, a vertex buffer, a transfer source/target and a
     // uniform texel buffer (texels()).

@@ -14,12 +14,14 @@
 #include <string>
 #include <vector>
 
+#include <quadtri/export.h>
+
 namespace quadtri {
 inline namespace v0 {
 
 // A failed Vulkan call ("vkCreateDevice failed: VK_ERROR_OUT_OF_HOST_MEMORY"), or no usable
 // driver or device.
-class VulkanError : public std::runtime_error {
+class QUADTRI_API VulkanError : public std::runtime_error {
 public:
     explicit VulkanError(const std::string& what, VkResult result = VK_SUCCESS)
         : std::runtime_error(what), result_(result) {}
@@ -29,7 +31,7 @@ private:
     VkResult result_;
 };
 
-const char* vkResultName(VkResult result);
+QUADTRI_API const char* vkResultName(VkResult result);
 
 namespace detail {
 // A zero-initialized Vulkan struct with its sType set.
@@ -42,9 +44,9 @@ T vkStruct(VkStructureType type) {
 }  // namespace detail
 
 // Throws VulkanError "<call> failed: <VkResult>" unless result is VK_SUCCESS.
-void vkCheck(VkResult result, const char* call);
+QUADTRI_API void vkCheck(VkResult result, const char* call);
 
-class VulkanContext {
+class QUADTRI_API VulkanContext {
 public:
     // Handles owned by the caller; the context uses them and never destroys them. The queue must
     // belong to queueFamilyIndex and support compute; the device must be Vulkan 1.1 or newer.

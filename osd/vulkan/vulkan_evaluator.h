@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <vector>
 
+#include <quadtri/export.h>
 #include <quadtri/osd/buffer_descriptor.h>
 #include <quadtri/osd/vulkan_buffer.h>
 #include <quadtri/osd/vulkan_context.h>
@@ -28,7 +29,7 @@ struct VulkanBufferRef {
     VkBufferView texels = VK_NULL_HANDLE;
 };
 
-class VulkanEvaluator {
+class QUADTRI_API VulkanEvaluator {
 public:
     explicit VulkanEvaluator(VulkanContext& ctx);
     ~VulkanEvaluator();

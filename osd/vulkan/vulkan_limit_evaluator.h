@@ -9,6 +9,7 @@
 
 #include <memory>
 
+#include <quadtri/export.h>
 #include <quadtri/osd/buffer_descriptor.h>
 #include <quadtri/osd/vulkan_buffer.h>
 #include <quadtri/osd/vulkan_context.h>
@@ -22,7 +23,7 @@ namespace detail {
 class VulkanKernel;
 }
 
-class VulkanLimitEvaluator {
+class QUADTRI_API VulkanLimitEvaluator {
 public:
     explicit VulkanLimitEvaluator(VulkanContext& ctx);
     ~VulkanLimitEvaluator();

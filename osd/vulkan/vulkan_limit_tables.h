@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <quadtri/export.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/osd/vulkan_context.h>
@@ -14,7 +15,7 @@ namespace quadtri {
 inline namespace v0 {
 
 // A LimitStencilTable uploaded once to device-local storage buffers, for VulkanLimitEvaluator.
-class VulkanLimitStencilTable : public detail::PooledTableBuffers {
+class QUADTRI_API VulkanLimitStencilTable : public detail::PooledTableBuffers {
 public:
     // Copies the table's five arrays through one staging buffer (waits); std::invalid_argument
     // when they are inconsistent (a run or a weight triple outside its pool included).
@@ -26,7 +27,7 @@ public:
     using PooledTableBuffers::sizes;
 };
 
-class VulkanMeshNormalTable {
+class QUADTRI_API VulkanMeshNormalTable {
 public:
     // Copies the table's faces and each vertex's faces (faceOffsets, faceCorners, vertexFaceOffsets,
     // vertexFaces) through one staging buffer (waits); std::invalid_argument when they are

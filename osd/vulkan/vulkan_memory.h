@@ -6,13 +6,14 @@
 
 #include <vector>
 
+#include <quadtri/export.h>
 #include <quadtri/osd/vulkan_context.h>
 
 namespace quadtri {
 inline namespace v0 {
 namespace detail {
 
-class DeviceBuffer {
+class QUADTRI_API DeviceBuffer {
 public:
     DeviceBuffer() = default;
     // size 0 is rounded up to 4 bytes (Vulkan has no empty buffers).
@@ -40,7 +41,7 @@ private:
 // A VkBufferView over a whole buffer created with VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT: the
 // shaders read the tables' pools through it (texelFetch), which lavapipe compiles to vector
 // gathers where a storage-buffer load is a branch per lane (docs/decisions/0003-vulkan-on-lavapipe.md).
-class TexelView {
+class QUADTRI_API TexelView {
 public:
     TexelView() = default;
     TexelView(VulkanContext& ctx, const DeviceBuffer& buffer, VkFormat format);
@@ -69,12 +70,12 @@ struct CopyRegion {
 
 // Uploads every region's `source` (one staging buffer, one submission, waited on) and makes the
 // writes visible to later compute-shader and transfer reads.
-void upload(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
+QUADTRI_API void upload(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
 // Copies every region into its `target`, waiting for the device.
-void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
+QUADTRI_API void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
 
 // Makes transfer writes (copies, fills) visible to later compute-shader and transfer access.
-void barrierAfterTransferWrite(VkCommandBuffer cmd);
+QUADTRI_API void barrierAfterTransferWrite(VkCommandBuffer cmd);
 
 }  // namespace detail
 }  // namespace v0

@@ -5,6 +5,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <quadtri/export.h>
 #include <quadtri/far/stencil_table.h>
 #include <quadtri/osd/vulkan_context.h>
 #include <quadtri/osd/vulkan_memory.h>
@@ -18,7 +19,7 @@ namespace detail {
 // (offsets, numStencils + 1 of them; indices; per-stencil weight offsets; the weight pool), or
 // LimitStencilTable's five (one size and one offset per stencil, since runs of sources are
 // shared; the pool of runs; weight offsets; the pool of weight triples).
-class PooledTableBuffers {
+class QUADTRI_API PooledTableBuffers {
 public:
     int numStencils() const { return numStencils_; }
     int numSourceVertices() const { return numSourceVertices_; }
@@ -63,7 +64,7 @@ private:
 
 }  // namespace detail
 
-class VulkanStencilTable : public detail::PooledTableBuffers {
+class QUADTRI_API VulkanStencilTable : public detail::PooledTableBuffers {
 public:
     VulkanStencilTable(VulkanContext& ctx, const StencilTable& table)
         : PooledTableBuffers(ctx, {table.numSourceVertices, nullptr, table.offsets, table.indices, table.weightOffsets,

@@ -27,6 +27,7 @@ namespace {
 
 using namespace quadtri;
 using namespace quadtri::test;
+using namespace quadtri::internal;
 
 // Loop takes no quads, which every shape here has.
 const Scheme kSchemes[] = {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly,

@@ -20,6 +20,7 @@ namespace {
 
 using namespace quadtri;
 using namespace quadtri::test;
+using namespace quadtri::internal;
 
 const double kPi = std::acos(-1.0);
 

@@ -13,6 +13,8 @@
 
 namespace quadtri::test {
 
+using namespace quadtri::internal;
+
 inline Options schemeOptions(Scheme scheme) {
     Options o;
     o.scheme = scheme;
