@@ -19,9 +19,8 @@ namespace kernels {
 namespace {
 
 // x, y, z of an element that is only 4-byte aligned; lane 3 is 0. One masked load, which reads
-// nothing past z (a masked-out lane never faults), as the stencil kernel's: 1.05-1.12x faster on
-// the 100² tori's factorized limit tables at level 3 than the two loads and a shuffle it replaced
-// (the same bits; docs/limit_evaluation.md).
+// nothing past z (a masked-out lane never faults), as the stencil kernel's: fewer instructions
+// than two loads and a shuffle, the same bits (docs/limit_evaluation.md has the figures).
 inline __m128 loadXyz(const float* p) { return _mm_maskload_ps(p, _mm_setr_epi32(-1, -1, -1, 0)); }
 
 inline void storeXyz(float* d, __m128 v) {
@@ -106,8 +105,7 @@ void writeNormals8(const float* src, int srcStride, const __m128 (&u)[8], const 
 // 4-7: the low halves are the even entries' sums and the high halves the odd ones', each lane
 // doing what two 128-bit sums per output did (so their bits), with one fused multiply-add per
 // output and pair of entries. The pair's six weights are one load, each weight put in its half by
-// a permute, where broadcasting them took six loads: 1.23-1.25x on the tori's factorized limit
-// tables (docs/limit_evaluation.md).
+// a permute, where broadcasting them took six loads (docs/limit_evaluation.md has the figures).
 inline void accumulate(const float* src, int srcStride, const LimitStencilArrays& t, const LimitOutputs& o, int i,
                        __m128& u, __m128& v) {
     const int first = t.offsets[i], n = t.sizes[i];

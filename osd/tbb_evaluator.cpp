@@ -16,11 +16,9 @@ inline namespace v0 {
 
 namespace {
 
-// Stencils per task (blocked_range splits down to blocks of kGrain/2..kGrain). A stencil costs
-// ~4-8 ns at width 3 (6-14 entries), so a block is ~5-15 us of work, far above TBB's per-task
-// cost. Measured on 2 idle cores: 48k- and 193k-stencil tables run ~2x faster with 2 threads than
-// with 1 at any grain from 512 to 8192, and a 6k-stencil table still ~1.8x at this grain. Ranges
-// shorter than two blocks run serially in the calling thread.
+// Stencils per task (blocked_range splits down to blocks of kGrain/2..kGrain): a block is
+// microseconds of work, far above TBB's per-task cost, and small tables still split in two
+// (docs/threads.md). Ranges shorter than two blocks run serially in the calling thread.
 constexpr int kGrain = 2048;
 
 // Runs body(begin, end) over [start, end): serially when the range is under two blocks of `grain`,

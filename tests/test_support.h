@@ -7,18 +7,27 @@
 #include <vector>
 
 #include <quadtri/far/refiner.h>
+#include "far/schemes/scheme.h"
 #include "tools/obj_io.h"
-
-namespace quadtri {
-inline namespace v0 {
-namespace internal {}
-}  // namespace v0
-}  // namespace quadtri
 
 namespace quadtri::test {
 
 // The tests read the analyzer's internals (quadtri::internal) as well as its public API.
 using namespace quadtri::internal;
+
+// The registered schemes (allSchemes(), in registry order) whose rules satisfy `keep`: a test of
+// "every scheme that ..." follows the registry, so a new scheme is tested without editing it.
+template <typename Keep>
+std::vector<Scheme> schemesWhere(Keep keep) {
+    std::vector<Scheme> schemes;
+    for (Scheme scheme : allSchemes())
+        if (keep(rulesOf(scheme))) schemes.push_back(scheme);
+    return schemes;
+}
+// Every scheme that takes quads (all but Loop).
+inline std::vector<Scheme> schemesTakingQuads() {
+    return schemesWhere([](const SchemeRules& rules) { return rules.acceptsNonTriangles(); });
+}
 
 // Absolute path of a mesh under tests/meshes, e.g. meshPath("osd/catmark_cube.obj").
 std::string meshPath(const std::string& relative);

@@ -10,6 +10,10 @@ OUT=${2:-docs/images}
 mkdir -p "$OUT"
 render() { "$QUADTRI" render --supersample 3 "$@"; }
 
+# The README's picture: the mixed torus under Catmull-Clark and Schaefer-Warren.
+render data/mixed_torus.obj --level 4 --compare catmull-clark,schaefer-warren --size 560x440 --yaw 20 --pitch 35 \
+    --shading reflection-lines --stripes 14 -o "$OUT/readme_torus.png"
+
 # The mixed torus under the three mixed schemes: Catmull-Clark ripples over the triangles,
 # Stam-Loop bends the stripes at the seam, Schaefer-Warren keeps them straight.
 SCHEMES=catmull-clark,stam-loop,schaefer-warren

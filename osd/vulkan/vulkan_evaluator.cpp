@@ -7,6 +7,7 @@
 #include <string>
 
 #include "osd/internal/eval_arguments.h"
+#include "osd/vulkan/vulkan_memory.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -37,10 +38,11 @@ uint32_t toU32(std::size_t v, const char* what) {
 
 }  // namespace
 
-VulkanEvaluator::VulkanEvaluator(VulkanContext& ctx)
-    : ctx_(ctx),
-      unused_(ctx, 16, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
-      unusedIndexTexels_(ctx, unused_, VK_FORMAT_R32_SINT), unusedFloatTexels_(ctx, unused_, VK_FORMAT_R32_SFLOAT) {}
+struct VulkanEvaluator::Unused : detail::UnusedBindings {
+    using UnusedBindings::UnusedBindings;
+};
+
+VulkanEvaluator::VulkanEvaluator(VulkanContext& ctx) : ctx_(ctx), unused_(std::make_unique<Unused>(ctx, 0)) {}
 
 VulkanEvaluator::~VulkanEvaluator() {
     for (DescriptorArena* a : {&recorded_, &waited_})
@@ -111,9 +113,9 @@ void VulkanEvaluator::record(VkCommandBuffer cmd, DescriptorArena& arena, const 
         {src.buffer, srcBase, VK_WHOLE_SIZE},      {dst.buffer, dstBase, VK_WHOLE_SIZE},
     };
     const VkBufferView texels[kTexelBindings] = {
-        poolTexels ? table.indexTexels() : unusedIndexTexels_.view(),
-        poolTexels ? table.weightTexels() : unusedFloatTexels_.view(),
-        sourceTexels ? src.texels : unusedFloatTexels_.view(),
+        poolTexels ? table.indexTexels() : unused_->indexTexels.view(),
+        poolTexels ? table.weightTexels() : unused_->floatTexels.view(),
+        sourceTexels ? src.texels : unused_->floatTexels.view(),
     };
     VkWriteDescriptorSet writes[kBindings];
     for (uint32_t b = 0; b < kBindings; ++b) {

@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include <quadtri/export.h>
@@ -82,8 +83,8 @@ private:
                 const VulkanStencilTable& table, int start, int end);
 
     VulkanContext& ctx_;
-    detail::DeviceBuffer unused_;  // behind the texel views bound where a table or source has none
-    detail::TexelView unusedIndexTexels_, unusedFloatTexels_;
+    struct Unused;                  // bound where a table or source has no texel view
+    std::unique_ptr<Unused> unused_;
     DescriptorArena recorded_;  // sets of EvalStencils / EvalLevels (caller's command buffers)
     DescriptorArena waited_;    // sets of the *AndWait calls, reset after each
 };

@@ -7,6 +7,7 @@
 
 #include "osd/internal/eval_arguments.h"
 #include "osd/vulkan/vulkan_kernel.h"
+#include "osd/vulkan/vulkan_memory.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -48,26 +49,27 @@ VulkanBufferRef refOf(const VulkanVertexBuffer* b) { return {b ? b->buffer() : V
 
 }  // namespace
 
-VulkanLimitEvaluator::VulkanLimitEvaluator(VulkanContext& ctx)
-    : ctx_(ctx),
-      limit_(std::make_unique<detail::VulkanKernel>(ctx, shaders::limit_eval_comp, shaders::limit_eval_comp_words,
-                                                    kLimitBindings, kLimitPushWords)),
-      normals_(std::make_unique<detail::VulkanKernel>(ctx, shaders::mesh_normals_comp, shaders::mesh_normals_comp_words,
-                                                      kNormalBindings, kNormalPushWords)),
-      unused_(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
-      unusedIndexTexels_(ctx, unused_, VK_FORMAT_R32_SINT), unusedWeightTexels_(ctx, unused_, VK_FORMAT_R32_SFLOAT) {}
+struct VulkanLimitEvaluator::Kernels {
+    explicit Kernels(VulkanContext& ctx)
+        : limit(ctx, shaders::limit_eval_comp, shaders::limit_eval_comp_words, kLimitBindings, kLimitPushWords),
+          normals(ctx, shaders::mesh_normals_comp, shaders::mesh_normals_comp_words, kNormalBindings, kNormalPushWords),
+          unused(ctx, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
+    detail::VulkanKernel limit, normals;
+    detail::UnusedBindings unused;  // bound where an output, the fallback or a texel view is absent
+};
+
+VulkanLimitEvaluator::VulkanLimitEvaluator(VulkanContext& ctx) : ctx_(ctx), kernels_(std::make_unique<Kernels>(ctx)) {}
 
 VulkanLimitEvaluator::~VulkanLimitEvaluator() = default;
 
 void VulkanLimitEvaluator::resetDescriptorSets() {
-    limit_->resetSets(detail::Arena::Recorded);
-    normals_->resetSets(detail::Arena::Recorded);
+    kernels_->limit.resetSets(detail::Arena::Recorded);
+    kernels_->normals.resetSets(detail::Arena::Recorded);
 }
 
 void VulkanLimitEvaluator::resetWaited() {
-    limit_->resetSets(detail::Arena::Waited);
-    normals_->resetSets(detail::Arena::Waited);
+    kernels_->limit.resetSets(detail::Arena::Waited);
+    kernels_->normals.resetSets(detail::Arena::Waited);
 }
 
 void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const VulkanBufferRef& src,
@@ -99,7 +101,7 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
     int32_t mask = 0;
     for (int k = 0; k < 4; ++k) {
         if (!present[k]) {
-            infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
+            infos.push_back({kernels_->unused.buffer.buffer(), 0, VK_WHOLE_SIZE});
             words.push_back(0);
             constants.push_back(0);
             continue;
@@ -115,17 +117,17 @@ void VulkanLimitEvaluator::recordLimit(VkCommandBuffer cmd, bool waited, const V
         mask |= 16;
         for (VkBuffer b : fallback->buffers()) infos.push_back({b, 0, VK_WHOLE_SIZE});
     } else {
-        for (int k = 0; k < 4; ++k) infos.push_back({unused_.buffer(), 0, VK_WHOLE_SIZE});
+        for (int k = 0; k < 4; ++k) infos.push_back({kernels_->unused.buffer.buffer(), 0, VK_WHOLE_SIZE});
     }
     constants.push_back(mask);
     const bool poolTexels = table.indexTexels() != VK_NULL_HANDLE;
     constants.push_back(poolTexels);
     constants.push_back(sourceTexels);
     std::vector<VkBufferView> texels(kLimitBindings.size(), VK_NULL_HANDLE);
-    texels[kFirstTexelBinding] = poolTexels ? table.indexTexels() : unusedIndexTexels_.view();
-    texels[kFirstTexelBinding + 1] = poolTexels ? table.weightTexels() : unusedWeightTexels_.view();
-    texels[kFirstTexelBinding + 2] = sourceTexels ? src.texels : unusedWeightTexels_.view();
-    limit_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end,
+    texels[kFirstTexelBinding] = poolTexels ? table.indexTexels() : kernels_->unused.indexTexels.view();
+    texels[kFirstTexelBinding + 1] = poolTexels ? table.weightTexels() : kernels_->unused.floatTexels.view();
+    texels[kFirstTexelBinding + 2] = sourceTexels ? src.texels : kernels_->unused.floatTexels.view();
+    kernels_->limit.record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants, words, start, end,
                    texels);
 }
 
@@ -189,7 +191,7 @@ void VulkanLimitEvaluator::recordNormals(VkCommandBuffer cmd, bool waited, const
     infos.push_back(s.info);
     infos.push_back(d.info);
     const std::vector<int32_t> constants{srcDesc.stride, dstDesc.stride};
-    normals_->record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants,
+    kernels_->normals.record(cmd, waited ? detail::Arena::Waited : detail::Arena::Recorded, infos, constants,
                      {s.floatOffset, d.floatOffset}, start, end);
 }
 

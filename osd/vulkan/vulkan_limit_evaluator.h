@@ -19,10 +19,6 @@
 namespace quadtri {
 inline namespace v0 {
 
-namespace detail {
-class VulkanKernel;
-}
-
 class QUADTRI_API VulkanLimitEvaluator {
 public:
     explicit VulkanLimitEvaluator(VulkanContext& ctx);
@@ -72,9 +68,8 @@ private:
     void resetWaited();
 
     VulkanContext& ctx_;
-    std::unique_ptr<detail::VulkanKernel> limit_, normals_;
-    detail::DeviceBuffer unused_;  // bound where an output or the fallback is absent
-    detail::TexelView unusedIndexTexels_, unusedWeightTexels_;  // where a table's pools have no texel views
+    struct Kernels;  // the limit and normal kernels, and what is bound where an evaluation has nothing
+    std::unique_ptr<Kernels> kernels_;
 };
 
 }  // namespace v0

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "osd/vulkan/vulkan_memory.h"
+
 namespace quadtri {
 inline namespace v0 {
 
@@ -25,18 +27,26 @@ void uploadAll(VulkanContext& ctx, detail::DeviceBuffer (&to)[N], const void* co
 
 }  // namespace
 
+struct VulkanMeshNormalTable::Arrays {
+    detail::DeviceBuffer buffers[4];
+};
+
 VulkanMeshNormalTable::VulkanMeshNormalTable(VulkanContext& ctx, const MeshNormalTable& t)
-    : device_(ctx.device()), numVertices_(t.numVertices) {
+    : device_(ctx.device()), numVertices_(t.numVertices), arrays_(std::make_unique<Arrays>()) {
     if (t.faceOffsets.empty() || std::size_t(t.faceOffsets.back()) != t.faceCorners.size() ||
         t.vertexFaceOffsets.size() != std::size_t(t.numVertices) + 1 ||
         std::size_t(t.vertexFaceOffsets.back()) != t.vertexFaces.size())
         throw std::invalid_argument("VulkanMeshNormalTable: inconsistent MeshNormalTable arrays");
     const std::vector<int>* arrays[4] = {&t.faceOffsets, &t.faceCorners, &t.vertexFaceOffsets, &t.vertexFaces};
-    uploadAll(ctx, arrays_, {arrays[0]->data(), arrays[1]->data(), arrays[2]->data(), arrays[3]->data()},
+    uploadAll(ctx, arrays_->buffers, {arrays[0]->data(), arrays[1]->data(), arrays[2]->data(), arrays[3]->data()},
               {arrays[0]->size() * sizeof(int), arrays[1]->size() * sizeof(int), arrays[2]->size() * sizeof(int),
                arrays[3]->size() * sizeof(int)});
-    for (int k = 0; k < 4; ++k) handles_[k] = arrays_[k].buffer();
+    for (int k = 0; k < 4; ++k) handles_[k] = arrays_->buffers[k].buffer();
 }
+
+VulkanMeshNormalTable::~VulkanMeshNormalTable() = default;
+VulkanMeshNormalTable::VulkanMeshNormalTable(VulkanMeshNormalTable&&) noexcept = default;
+VulkanMeshNormalTable& VulkanMeshNormalTable::operator=(VulkanMeshNormalTable&&) noexcept = default;
 
 }  // namespace v0
 }  // namespace quadtri

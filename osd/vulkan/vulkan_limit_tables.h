@@ -2,29 +2,30 @@
 // VulkanLimitEvaluator (like VulkanStencilTable for VulkanEvaluator).
 #pragma once
 
+#include <memory>
+
 #include <vulkan/vulkan.h>
 
 #include <quadtri/export.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/osd/vulkan_context.h>
-#include <quadtri/osd/vulkan_memory.h>
 #include <quadtri/osd/vulkan_stencil_table.h>
 
 namespace quadtri {
 inline namespace v0 {
 
 // A LimitStencilTable uploaded once to device-local storage buffers, for VulkanLimitEvaluator.
-class QUADTRI_API VulkanLimitStencilTable : public detail::PooledTableBuffers {
+class QUADTRI_API VulkanLimitStencilTable : public VulkanPooledTable {
 public:
     // Copies the table's five arrays through one staging buffer (waits); std::invalid_argument
     // when they are inconsistent (a run or a weight triple outside its pool included).
     VulkanLimitStencilTable(VulkanContext& ctx, const LimitStencilTable& table)
-        : PooledTableBuffers(ctx, {table.numSourceVertices, &table.sizes, table.offsets, table.indices,
+        : VulkanPooledTable(ctx, {table.numSourceVertices, &table.sizes, table.offsets, table.indices,
                                    table.weightOffsets, table.weights, 3},
                              "LimitStencilTable") {}
 
-    using PooledTableBuffers::sizes;
+    using VulkanPooledTable::sizes;
 };
 
 class QUADTRI_API VulkanMeshNormalTable {
@@ -33,6 +34,9 @@ public:
     // vertexFaces) through one staging buffer (waits); std::invalid_argument when they are
     // inconsistent. The chunks and seams are the host's only.
     VulkanMeshNormalTable(VulkanContext& ctx, const MeshNormalTable& table);
+    ~VulkanMeshNormalTable();
+    VulkanMeshNormalTable(VulkanMeshNormalTable&&) noexcept;
+    VulkanMeshNormalTable& operator=(VulkanMeshNormalTable&&) noexcept;
 
     int numVertices() const { return numVertices_; }
     // The four arrays in that order, as the shaders bind them.
@@ -42,8 +46,9 @@ public:
 private:
     VkDevice device_;
     int numVertices_ = 0;
-    detail::DeviceBuffer arrays_[4];
     VkBuffer handles_[4] = {};
+    struct Arrays;  // the buffers behind handles_
+    std::unique_ptr<Arrays> arrays_;
 };
 
 }  // namespace v0

@@ -1,4 +1,4 @@
-#include <quadtri/osd/vulkan_memory.h>
+#include "osd/vulkan/vulkan_memory.h"
 
 #include <cstring>
 #include <utility>
@@ -143,6 +143,10 @@ void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions) {
         at += r.bytes;
     }
 }
+
+UnusedBindings::UnusedBindings(VulkanContext& ctx, VkBufferUsageFlags usage)
+    : buffer(ctx, 16, usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+      indexTexels(ctx, buffer, VK_FORMAT_R32_SINT), floatTexels(ctx, buffer, VK_FORMAT_R32_SFLOAT) {}
 
 }  // namespace detail
 }  // namespace v0

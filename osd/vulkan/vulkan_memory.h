@@ -1,4 +1,4 @@
-// Internal helpers of the Vulkan evaluator: an owning VkBuffer + VkDeviceMemory, and copies
+// Private helpers of the Vulkan evaluators (never installed): an owning VkBuffer + VkDeviceMemory, and copies
 // between host memory and device buffers through a staging buffer.
 #pragma once
 
@@ -73,6 +73,15 @@ struct CopyRegion {
 QUADTRI_API void upload(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
 // Copies every region into its `target`, waiting for the device.
 QUADTRI_API void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
+
+// A small buffer with R32_SINT and R32_SFLOAT texel views over it: bound where an evaluation has
+// no buffer or view of its own for a binding (a table whose pools have no texel views, an absent
+// output), since every binding of a descriptor set must name something.
+struct UnusedBindings {
+    UnusedBindings(VulkanContext& ctx, VkBufferUsageFlags usage);
+    DeviceBuffer buffer;
+    TexelView indexTexels, floatTexels;
+};
 
 // Makes transfer writes (copies, fills) visible to later compute-shader and transfer access.
 QUADTRI_API void barrierAfterTransferWrite(VkCommandBuffer cmd);

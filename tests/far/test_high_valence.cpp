@@ -16,6 +16,7 @@
 #include <quadtri/far/refiner.h>
 #include "tests/local_meshes.h"
 #include "tests/schemes/seam_support.h"
+#include "tests/test_support.h"
 #include "far/internal/stencil_table_double.h"
 
 namespace quadtri {
@@ -30,8 +31,7 @@ using namespace quadtri::test;
 using namespace quadtri::internal;
 
 // Loop takes no quads, which every shape here has.
-const Scheme kSchemes[] = {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly,
-                           Scheme::CatmullClark};
+const std::vector<Scheme> kSchemes = schemesTakingQuads();
 
 struct Shape {
     std::string name;

@@ -120,7 +120,12 @@ TEST(Validation, VertexIndexOutOfRange) {
 // the result must be the same surface, bitwise, as the mesh written with those loops as faces,
 // with a warning naming the face and the vertex.
 void expectSameRefinement(const LocalMesh& degenerate, const LocalMesh& clean, const std::string& what) {
-    for (Scheme scheme : {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly})
+    // Every scheme that takes quads and reads a repeated corner as face loops (Catmull-Clark keeps
+    // a collapsed edge as OpenSubdiv does: test_catmull_clark).
+    const std::vector<Scheme> schemes = schemesWhere([](const SchemeRules& rules) {
+        return rules.acceptsNonTriangles() && rules.collapsedEdges() == CollapsedEdges::Drop;
+    });
+    for (Scheme scheme : schemes)
         for (bool leftHanded : {false, true}) {
             Options o;
             o.scheme = scheme;
@@ -223,7 +228,7 @@ TEST(Validation, IsolatedVerticesAndNoFaces) {
             m = cube();
             m.numVertices += extra;  // unused vertices after the last used one
         }
-        for (Scheme scheme : {Scheme::Bilinear, Scheme::StamLoop, Scheme::SchaeferWarren, Scheme::CatmarkButterfly}) {
+        for (Scheme scheme : schemesTakingQuads()) {
             Options o;
             o.scheme = scheme;
             Refiner refiner(m.descriptor(), o);

@@ -15,7 +15,13 @@ install(FILES ${QUADTRI_PUBLIC_HEADERS_FAR} DESTINATION ${CMAKE_INSTALL_INCLUDED
 install(FILES ${QUADTRI_PUBLIC_HEADERS_OSD} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/quadtri/osd)
 install(FILES ${QUADTRI_INCLUDE_ROOT}/quadtri/version.h ${QUADTRI_INCLUDE_ROOT}/quadtri/export.h ${QUADTRI_INCLUDE_ROOT}/quadtri/quadtri.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/quadtri)
+if(QUADTRI_WITH_TBB)
+  set_target_properties(quadtri_tbb PROPERTIES EXPORT_NAME tbb)
+  install(TARGETS quadtri_tbb EXPORT quadtriTargets)
+endif()
 install(EXPORT quadtriTargets NAMESPACE quadtri:: DESTINATION ${QUADTRI_CMAKE_DIR})
+# The license (Apache-2.0) beside the documentation, as Debian places it.
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/quadtri)
 
 # The Vulkan evaluator is a component of its own, in its own targets file, so that a consumer of
 # the core never needs Vulkan (quadtriConfig.cmake looks for it only when asked or when present).

@@ -12,7 +12,7 @@
 #include <quadtri/osd/vulkan_evaluator.h>
 #include <quadtri/osd/vulkan_limit_evaluator.h>
 #include <quadtri/osd/vulkan_limit_tables.h>
-#include <quadtri/osd/vulkan_memory.h>
+#include "osd/vulkan/vulkan_memory.h"
 #include <quadtri/osd/vulkan_stencil_table.h>
 #include "tools/realtime/frame_evaluator.h"
 #include "tools/realtime/surface_tables.h"

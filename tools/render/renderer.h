@@ -17,7 +17,7 @@
 #include <quadtri/far/draw_buffers.h>
 #include <quadtri/osd/vulkan_context.h>
 #include <quadtri/osd/vulkan_evaluator.h>
-#include <quadtri/osd/vulkan_memory.h>
+#include "osd/vulkan/vulkan_memory.h"
 
 #include "tools/render/camera.h"
 #include "tools/render/image.h"

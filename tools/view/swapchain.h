@@ -11,7 +11,7 @@
 #include <vector>
 
 #include <quadtri/osd/vulkan_context.h>
-#include <quadtri/osd/vulkan_memory.h>
+#include "osd/vulkan/vulkan_memory.h"
 
 #include "tools/render/attachment.h"
 #include "tools/render/image.h"
