@@ -1,5 +1,8 @@
 #include "tests/osd_reference.h"
 
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefiner.h>
@@ -20,6 +23,7 @@ namespace quadtri::test {
 
 namespace Far = OpenSubdiv::Far;
 namespace Sdc = OpenSubdiv::Sdc;
+namespace Bfr = OpenSubdiv::Bfr;
 
 const char* toString(OsdScheme scheme) {
     switch (scheme) {
@@ -657,6 +661,37 @@ PositionMatch matchPositions(const std::vector<float>& ours, const std::vector<f
         if (d > tolerance * diagonal) m.outliers.push_back(i);
     }
     return m;
+}
+
+OsdSurfacePoints osdSurfacePoints(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                                  CreaseMethod creaseMethod, int approxLevel, const std::vector<int>& faces,
+                                  const std::vector<double>& uv, bool leftHanded) {
+    std::unique_ptr<Far::TopologyRefiner> refiner = createRefiner(mesh, scheme, boundary, creaseMethod, false, leftHanded);
+    Bfr::RefinerSurfaceFactory<>::Options options;
+    options.SetApproxLevelSmooth(approxLevel);
+    options.SetApproxLevelSharp(approxLevel);
+    const Bfr::RefinerSurfaceFactory<> factory(*refiner, options);
+    const std::vector<double> meshPoints(mesh.positions.begin(), mesh.positions.end());
+    const Bfr::Surface<double>::PointDescriptor xyz(3);
+    OsdSurfacePoints out;
+    out.position.assign(3 * faces.size(), 0.0);
+    out.du = out.dv = out.position;
+    out.evaluated.assign(faces.size(), 0);
+    Bfr::Surface<double> surface;
+    std::vector<double> patchPoints;
+    int prepared = -1;
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        if (faces[i] != prepared) {
+            prepared = -1;
+            if (!factory.InitVertexSurface(faces[i], &surface)) continue;
+            patchPoints.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
+            surface.PreparePatchPoints(meshPoints.data(), xyz, patchPoints.data(), xyz);
+            prepared = faces[i];
+        }
+        surface.Evaluate(&uv[2 * i], patchPoints.data(), xyz, &out.position[3 * i], &out.du[3 * i], &out.dv[3 * i]);
+        out.evaluated[i] = 1;
+    }
+    return out;
 }
 
 }  // namespace quadtri::test

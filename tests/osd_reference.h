@@ -75,6 +75,18 @@ OsdLimit osdLimit(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolati
 OsdLimit osdLimitInFloat(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                          CreaseMethod creaseMethod, int level, bool smoothTriangles = false, bool leftHanded = false);
 
+// OpenSubdiv's limit surface at points of base faces: Bfr::RefinerSurfaceFactory with both
+// approximation levels (SetApproxLevelSmooth, SetApproxLevelSharp) at `approxLevel`, in double.
+// Point i is (faces[i], uv[2i], uv[2i + 1]); a face without a limit surface (a hole) gets
+// evaluated[i] = 0.
+struct OsdSurfacePoints {
+    std::vector<double> position, du, dv;  // 3 per point
+    std::vector<char> evaluated;
+};
+OsdSurfacePoints osdSurfacePoints(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                                  CreaseMethod creaseMethod, int approxLevel, const std::vector<int>& faces,
+                                  const std::vector<double>& uv, bool leftHanded = false);
+
 // OpenSubdiv's refined positions of one level (PrimvarRefiner::Interpolate) and its varying
 // interpolation of the control positions there (InterpolateVarying), both in its vertex order.
 struct OsdVarying {

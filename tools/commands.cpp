@@ -5,11 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <vector>
 
 #include <quadtri/far/draw_buffers.h>
+#include <quadtri/far/limit_surface.h>
 #include <quadtri/far/refiner.h>
 #include "tools/gltf_io.h"
 #include "tools/obj_io.h"
@@ -207,6 +210,72 @@ int runRefine(const RefineArgs& args) {
                      uvs);
     std::printf("%s: level %d, %d vertices, %d faces -> %s\n", args.mesh.input.c_str(), args.level,
                 faces.numVertices(), outputFaces(faces), args.output.c_str());
+    return 0;
+}
+
+int runEvaluate(const EvaluateArgs& args) {
+    io::ObjMesh mesh = loadMesh(args.mesh);
+    const Options options = makeOptions(args.mesh, mesh);
+    Refiner refiner = makeRefiner(mesh, options);
+    const LimitSurface surface(refiner);
+    if (surface.numFaces() != mesh.numFaces())
+        throw io::ObjError(args.mesh.input + ": a face repeats a vertex and was split or left out; " +
+                           "evaluate needs the file's faces as they are");
+    // Every line is read and checked before anything is evaluated or written.
+    std::ifstream in(args.points);
+    if (!in) throw io::ObjError(args.points + ": cannot be read");
+    struct Point {
+        int face;
+        double u, v;
+    };
+    std::vector<Point> points;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        const std::string where = args.points + ":" + std::to_string(number) + ": ";
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') continue;
+        std::istringstream fields(line);
+        long long face = 0;
+        double u = 0, v = 0;
+        std::string rest;
+        if (!(fields >> face >> u >> v) || (fields >> rest))
+            throw io::ObjError(where + "expected 'face u v' (an integer and two numbers), got '" + line + "'");
+        if (face < 1 || face > surface.numFaces())
+            throw io::ObjError(where + "face " + std::to_string(face) + " is out of range: " + args.mesh.input + " has " +
+                               std::to_string(surface.numFaces()) + " faces, numbered from 1");
+        const int f = int(face - 1);
+        const FaceParameterization p = surface.parameterization(f);
+        if (surface.isHole(f)) throw io::ObjError(where + "face " + std::to_string(face) + " is a hole: it has no surface");
+        if (!p.contains(u, v))
+            throw io::ObjError(where + "(" + line.substr(first) + "): (u, v) is outside face " + std::to_string(face) +
+                               "'s domain, " + p.describe());
+        points.push_back({f, u, v});
+    }
+    std::ostringstream text;
+    text.precision(9);
+    for (const Point& q : points) {
+        float x[3], du[3], dv[3];
+        surface.evaluate(q.face, q.u, q.v, mesh.positions.data(), 3, 3, x, du, dv);
+        double n[3] = {double(du[1]) * dv[2] - double(du[2]) * dv[1], double(du[2]) * dv[0] - double(du[0]) * dv[2],
+                       double(du[0]) * dv[1] - double(du[1]) * dv[0]};
+        const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (double& c : n) c = length > 0 ? c / length : 0.0;
+        text << x[0] << ' ' << x[1] << ' ' << x[2] << ' ' << n[0] << ' ' << n[1] << ' ' << n[2];
+        if (args.derivatives)
+            text << ' ' << du[0] << ' ' << du[1] << ' ' << du[2] << ' ' << dv[0] << ' ' << dv[1] << ' ' << dv[2];
+        text << '\n';
+    }
+    if (args.output.empty()) {
+        std::fputs(text.str().c_str(), stdout);
+        return 0;
+    }
+    std::ofstream out(args.output);
+    if (!(out << text.str()) || !out.flush()) {
+        out.close();
+        std::remove(args.output.c_str());
+        throw io::ObjError(args.output + ": cannot be written");
+    }
+    std::fprintf(stderr, "%s: %zu points -> %s\n", args.mesh.input.c_str(), points.size(), args.output.c_str());
     return 0;
 }
 

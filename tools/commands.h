@@ -147,7 +147,16 @@ struct RenderArgs {
 // The shading names `--shading` takes, in help order.
 const std::vector<std::string>& renderShadings();
 
+// `quadtri evaluate`: the limit surface at the points of a file (docs/command_line.md).
+struct EvaluateArgs {
+    MeshArgs mesh;
+    std::string points;  // one `face u v` per line, faces from 1 in the order of the file's f lines
+    std::string output;  // empty: standard output
+    bool derivatives = false;
+};
+
 int runRefine(const RefineArgs& args);
+int runEvaluate(const EvaluateArgs& args);
 int runInfo(const InfoArgs& args);
 int runDemo(const DemoArgs& args);
 // Exit status 2, with the reason on stderr, without a Vulkan device (or in a build without Vulkan).

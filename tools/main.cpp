@@ -278,6 +278,18 @@ int main(int argc, char** argv) {
             "and mesh for glTF")
         ->check(oneOf(normalKinds, "normal kind"));
 
+    cli::EvaluateArgs evaluate;
+    CLI::App* evaluateCmd = app.add_subcommand(
+        "evaluate", "Evaluate the limit surface at points of faces (position and normal; docs/surface.md)");
+    addMeshFlags(*evaluateCmd, evaluate.mesh);
+    evaluateCmd->add_option("--points", evaluate.points,
+                            "File of points, one 'face u v' per line (faces from 1 in the order of the f lines; "
+                            "blank lines and # comments skipped)")
+        ->required();
+    evaluateCmd->add_option("-o,--output", evaluate.output,
+                            "Output file, one 'x y z nx ny nz' line per point (default: standard output)");
+    evaluateCmd->add_flag("--derivatives", evaluate.derivatives, "Add dPdu and dPdv to each line");
+
     cli::InfoArgs info;
     CLI::App* infoCmd = app.add_subcommand("info", "Print topology statistics and table sizes per level");
     addMeshFlags(*infoCmd, info.mesh);
@@ -330,13 +342,15 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    const std::string& input = *refineCmd ? refine.mesh.input
+    const std::string& input = *refineCmd    ? refine.mesh.input
+                               : *evaluateCmd ? evaluate.mesh.input
                                : *infoCmd   ? info.mesh.input
                                : *renderCmd ? render.mesh.input
                                : *viewCmd   ? viewer.mesh.input
                                             : demo.mesh.input;
     try {
         if (*refineCmd) return cli::runRefine(refine);
+        if (*evaluateCmd) return cli::runEvaluate(evaluate);
         if (*infoCmd) return cli::runInfo(info);
         if (*renderCmd) return cli::runRender(render);
         if (*viewCmd) return view::runView(viewer);

@@ -16,8 +16,10 @@ namespace quadtri {
 inline namespace v0 {
 namespace internal {
 
-void cutPatch(const Topology& t, int vertex, WalkScratch& scratch, PatchCut& cut) {
-    for (std::vector<int>* a : {&cut.source, &cut.sizes, &cut.corners, &cut.creasePairs, &cut.holes, &cut.cornerVerts})
+void cutPatch(const Topology& t, IndexSpan seeds, int rings, WalkScratch& scratch, PatchCut& cut,
+              bool boundariesUnsharp) {
+    for (std::vector<int>* a :
+         {&cut.source, &cut.faceSource, &cut.sizes, &cut.corners, &cut.creasePairs, &cut.holes, &cut.cornerVerts})
         a->clear();
     cut.creaseWeights.clear();
     cut.cornerWeights.clear();
@@ -30,9 +32,9 @@ void cutPatch(const Topology& t, int vertex, WalkScratch& scratch, PatchCut& cut
     auto addVertex = [&](int v) {
         if (local.mark(v, int(cut.source.size()))) cut.source.push_back(v);
     };
-    addVertex(vertex);
+    for (int v : seeds) addVertex(v);
     size_t reached = 0;
-    for (int ring = 0; ring < kPatchRings; ++ring) {
+    for (int ring = 0; ring < rings; ++ring) {
         const size_t end = cut.source.size(), firstNew = faces.size();
         for (; reached < end; ++reached)
             for (int f : t.facesOfVertex(cut.source[reached]))
@@ -52,8 +54,10 @@ void cutPatch(const Topology& t, int vertex, WalkScratch& scratch, PatchCut& cut
         for (int u : t.verticesOfFace(f)) *corner++ = local.value(u);
         if (t.faceHole[f]) cut.holes.push_back(int(i));
         for (int e : t.edgesOfFace(f))
-            if (isSharp(t.edgeSharpness[e])) sharpEdges.push_back(e);
+            if (isSharp(t.edgeSharpness[e]) && !(boundariesUnsharp && (t.edgeFlags[e] & kEdgeBoundary)))
+                sharpEdges.push_back(e);
     }
+    cut.faceSource.assign(faces.begin(), faces.end());
     std::sort(sharpEdges.begin(), sharpEdges.end());
     sharpEdges.erase(std::unique(sharpEdges.begin(), sharpEdges.end()), sharpEdges.end());
     for (int e : sharpEdges) {
@@ -92,9 +96,7 @@ void PatchCut::key(const Options& options, std::vector<int>& k) const {
     floats(cornerWeights);
 }
 
-PatchStep refineCut(const PatchCut& cut, const Options& options) {
-    PatchStep step;
-    step.source = cut.source;
+Topology cutTopology(const PatchCut& cut, const Options& options) {
     TopologyDescriptor d;
     d.numVertices = int(cut.source.size());
     d.numFaces = int(cut.sizes.size());
@@ -108,7 +110,13 @@ PatchStep refineCut(const PatchCut& cut, const Options& options) {
     d.cornerWeights = cut.cornerWeights.empty() ? nullptr : cut.cornerWeights.data();
     d.numHoles = int(cut.holes.size());
     d.holeIndices = cut.holes.empty() ? nullptr : cut.holes.data();
-    const Topology patch = buildBaseTopology(d, options);
+    return buildBaseTopology(d, options);
+}
+
+PatchStep refineCut(const PatchCut& cut, const Options& options) {
+    PatchStep step;
+    step.source = cut.source;
+    const Topology patch = cutTopology(cut, options);
     const ChildNumbering num = numberChildren(patch, rulesOf(options.scheme).triangleSplit());
     step.table = buildLevelStencils<StencilTableD>(patch, num, options);
     step.child = refineTopology(patch, num, options.creaseMethod, TopologyDetail::Full);

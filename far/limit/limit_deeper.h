@@ -18,7 +18,8 @@ namespace internal {
 // The faces within kPatchRings face rings of `vertex`, in the patch's own vertex numbering: what
 // refining it depends on, all of it, so that two cuts with equal keys refine alike, bit for bit.
 struct PatchCut {
-    std::vector<int> source;  // per patch vertex: the vertex of the level it was cut from
+    std::vector<int> source;      // per patch vertex: the vertex of the level it was cut from
+    std::vector<int> faceSource;  // per patch face: the face of the level it was cut from
     std::vector<int> sizes, corners, creasePairs, holes, cornerVerts;
     std::vector<float> creaseWeights, cornerWeights;
 
@@ -38,8 +39,20 @@ struct PatchStep {
 // reach two rings of the parent at most (Schaefer-Warren's copies, Butterfly's wings).
 constexpr int kPatchRings = 6;
 
-// Into `cut` (its arrays reused), in `scratch`'s working space.
-void cutPatch(const Topology& level, int vertex, WalkScratch& scratch, PatchCut& cut);
+// Into `cut` (its arrays reused), in `scratch`'s working space: the faces within `rings` face
+// rings of the `seeds` (patch vertices 0, 1, ... in seed order), the first ring's faces first.
+// With `boundariesUnsharp`, boundary edges keep no crease: the cut's own rebuild makes its
+// boundaries sharp again, and a cut of a refined cut would otherwise carry the first cut's rim
+// inside as creases (far/surface/local_mesh.cpp).
+void cutPatch(const Topology& level, IndexSpan seeds, int rings, WalkScratch& scratch, PatchCut& cut,
+              bool boundariesUnsharp = false);
+// kPatchRings rings around one vertex.
+inline void cutPatch(const Topology& level, int vertex, WalkScratch& scratch, PatchCut& cut) {
+    cutPatch(level, IndexSpan(&vertex, &vertex + 1), kPatchRings, scratch, cut);
+}
+// The cut as the topology of a level of its own: its faces, holes and sharpness, in the cut's
+// numbering (what the cut's refinement starts from).
+Topology cutTopology(const PatchCut& cut, const Options& options);
 PatchStep refineCut(const PatchCut& cut, const Options& options);
 PatchStep refinePatch(const Topology& level, int vertex, const Options& options, WalkScratch& scratch);
 

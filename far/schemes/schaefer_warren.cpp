@@ -155,6 +155,7 @@ namespace {
 
 class SchaeferWarrenRules : public SchemeRules {
 public:
+    SurfacePatches surfacePatches() const override { return {false, true, true, true}; }
     const char* name() const override { return "schaefer-warren"; }
     const char* description() const override {
         return "Stam-Loop plus unzipping of the tri/quad network: C2 across the ordinary seam";

@@ -74,6 +74,19 @@ protected:
     SparseAccumulator& acc_;
 };
 
+// Which faces of a level are regular patches of the scheme's limit surface, evaluated in closed
+// form by far/surface/ (docs/surface.md, "Regular patches"). A regular quad: its 4 corners
+// interior, manifold, of 4 quads, without sharpness on them or their edges, and no hole among
+// those 9 faces; a regular triangle likewise with 6 triangles at each corner.
+struct SurfacePatches {
+    bool bilinear = false;            // every quad is its bilinear patch, every triangle its linear one
+    bool bSplineQuads = false;        // a regular quad is the bicubic B-spline patch of its 16 points
+    bool boxSplineTriangles = false;  // a regular triangle is the quartic box-spline patch of its 12
+    // The patch's points must have only faces of the patch's own kind around them: where the
+    // scheme's masks near the other kind (its seam rules) reach the corners' masks.
+    bool pureNeighbourhood = false;
+};
+
 // One scheme, stateless: one object per scheme, registered in schemes.cpp.
 class SchemeRules {
 public:
@@ -109,6 +122,13 @@ public:
     // (level_estimate.cpp): its prepared level, masks longer than the shared bound. `parent`
     // may hold its faces only (TopologyDetail::FacesOnly): estimate from the faces then.
     virtual std::size_t extraLevelBytes(const Topology& /*parent*/) const { return 0; }
+
+    // What far/surface/ may evaluate in closed form, and how many face rings around a followed
+    // sub-face keep its children's masks and limit masks off the local mesh's rim: 2 where every
+    // mask reads one ring of the parent, more where masks read two (Butterfly's wings,
+    // Schaefer-Warren's copies) or limit masks are found by refining further (limit_deeper.h).
+    virtual SurfacePatches surfacePatches() const { return {}; }
+    virtual int surfaceRings() const { return 7; }
 
     // Appends to `out` (empty) the limit masks of one vertex of a level with full topology:
     // position, dU and dV (docs/limit.md). The default is the generic eigen-analysis of the

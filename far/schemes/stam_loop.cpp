@@ -68,6 +68,7 @@ namespace {
 
 class StamLoopRules : public SchemeRules {
 public:
+    SurfacePatches surfacePatches() const override { return {false, true, true, true}; }
     const char* name() const override { return "stam-loop"; }
     const char* description() const override {
         return "Catmull-Clark on quads, Loop on triangles, corrected mixed vertices (Stam-Loop)";

@@ -1,0 +1,106 @@
+// The limit surface at any point of a base face: position and first derivatives at (face, u, v),
+// for every scheme, as weights over the control vertices or applied to them (docs/surface.md).
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <quadtri/export.h>
+#include <quadtri/far/options.h>
+#include <quadtri/far/topology.h>
+
+namespace quadtri {
+inline namespace v0 {
+
+class Refiner;
+
+// How (u, v) cover a base face, as OpenSubdiv's Bfr::Parameterization: a quad is the unit square
+// from its first corner (corner 1 at (1, 0), corner 3 at (0, 1)); a triangle under a scheme that
+// splits triangles in four has its corners at (0, 0), (1, 0), (0, 1); any other face (an n-gon,
+// or a triangle under catmull-clark) is cut into one quad per corner, sub-face i the square
+// [x, x + ½] × [y, y + ½] at (x, y) = (i % gridWidth, i / gridWidth), its u along corner i's
+// leaving edge and its v along its entering edge, the face's centre at (x + ½, y + ½).
+struct QUADTRI_API FaceParameterization {
+    enum class Type { Quad, Triangle, QuadSubFaces };
+    Type type = Type::Quad;
+    int faceSize = 4;
+    int gridWidth = 0;  // QuadSubFaces: sub-faces per row of the (u, v) layout
+
+    static FaceParameterization of(Scheme scheme, int faceSize);
+    // Whether (u, v) lies in the face's domain, within `tolerance` of its edges.
+    bool contains(double u, double v, double tolerance = 1e-9) const;
+    // The (u, v) of corner i.
+    void cornerCoord(int corner, double& u, double& v) const;
+    // The (u, v) at t in [0, 1] along edge i (from corner i to corner i + 1).
+    void edgeCoord(int edge, double t, double& u, double& v) const;
+    // The domain in words, for error messages: "the unit square", ...
+    std::string describe() const;
+};
+
+// Weights of one point over the control vertices: the limit position and its derivatives along
+// the face's u and v (OpenSubdiv's Bfr derivatives: for a sub-face, per unit of the face's u, v).
+struct LimitPointStencil {
+    std::vector<int> indices;
+    std::vector<double> position;
+    std::vector<double> du;
+    std::vector<double> dv;
+    int size() const { return int(indices.size()); }
+};
+
+struct LimitSurfaceOptions {
+    // Levels of local refinement past which a point that is still in no regular sub-face is
+    // interpolated from the exact limit points of its sub-face's next level (docs/surface.md,
+    // "Error bound"). 10 leaves sub-faces of 1/1024 of the face.
+    int maxDepth = 10;
+    // Vertex rings of faces kept around the followed sub-face at each level; 0 picks the
+    // scheme's own (2 where every rule reads one ring, 3 where a rule reads two). Tests raise it
+    // to show the result does not depend on it.
+    int rings = 0;
+};
+
+// A point outside what the surface can evaluate: a face out of range or a hole, (u, v) outside
+// the face's domain. The message names the face (0-based) and the coordinate.
+class QUADTRI_API SurfaceError : public std::invalid_argument {
+public:
+    explicit SurfaceError(const std::string& what) : std::invalid_argument(what) {}
+};
+
+// The limit surface of a Refiner's control mesh (its level 0 and options; the Refiner may go
+// afterwards). Construction copies level 0 and nothing else: each point is found by refining
+// the neighbourhood of its face locally, with the scheme's own rules, until the point lies in a
+// regular sub-face (a bicubic B-spline patch on quads, a quartic box-spline patch on triangles)
+// or maxDepth is reached. Every method is const and may run on many threads at once.
+class QUADTRI_API LimitSurface {
+public:
+    explicit LimitSurface(const Refiner& refiner, LimitSurfaceOptions surfaceOptions = {});
+    ~LimitSurface();
+    LimitSurface(LimitSurface&&) noexcept;
+    LimitSurface& operator=(LimitSurface&&) noexcept;
+
+    int numFaces() const;
+    int numControlVertices() const;
+    const Options& options() const { return options_; }
+    FaceParameterization parameterization(int face) const;
+    bool isHole(int face) const;
+
+    // The weights of the point (u, v) of `face` over the control vertices. Throws SurfaceError
+    // for a face out of range or a hole, or (u, v) outside the face's domain.
+    void stencil(int face, double u, double v, LimitPointStencil& out) const;
+
+    // The point itself from `control` (numControlVertices() items of `width` floats, `stride`
+    // floats apart): its position and, where not null, dPdu and dPdv (`width` floats each).
+    void evaluate(int face, double u, double v, const float* control, int width, int stride, float* position,
+                  float* dPdu = nullptr, float* dPdv = nullptr) const;
+
+private:
+    void check(int face, double u, double v) const;
+
+    Options options_;
+    LimitSurfaceOptions surfaceOptions_;
+    std::shared_ptr<const Topology> base_;
+};
+
+}  // namespace v0
+}  // namespace quadtri

@@ -1,0 +1,101 @@
+// Local refinement towards a point (far/surface/local_mesh.h): the cut and its refinement are the
+// limit code's (far/limit/limit_deeper.h), around a face instead of a vertex; the rows carry each
+// local vertex's weights over the base neighbourhood, composed level by level in double.
+#include "far/surface/local_mesh.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "far/schemes/scheme.h"
+#include "far/tables/level_stencils.h"
+#include "far/topology/refine_topology.h"
+
+namespace quadtri {
+inline namespace v0 {
+namespace internal {
+
+namespace {
+
+// The cut's faces are the level's, already oriented counter-clockwise: rebuilt as they are.
+Options cutOptions(const Options& options) {
+    Options o = options;
+    o.leftHanded = false;
+    return o;
+}
+
+int positionOf(const std::vector<int>& list, int x) {
+    const auto it = std::find(list.begin(), list.end(), x);
+    if (it == list.end()) throw std::logic_error("local mesh: a kept item is missing from its cut");
+    return int(it - list.begin());
+}
+
+LocalMesh meshOfCut(const PatchCut& cut, int face, const Options& options) {
+    LocalMesh m;
+    m.topology = cutTopology(cut, cutOptions(options));
+    if (m.topology.numFaces() != int(cut.faceSource.size()))
+        throw std::logic_error("local mesh: the cut lost a face when rebuilt");
+    m.face = positionOf(cut.faceSource, face);
+    return m;
+}
+
+}  // namespace
+
+LocalMesh cutBase(const Topology& base, int face, int rings, const Options& options, WalkScratch& scratch,
+                  std::vector<int>& columns) {
+    PatchCut cut;
+    cutPatch(base, base.verticesOfFace(face), rings, scratch, cut, true);
+    LocalMesh m = meshOfCut(cut, face, options);
+    const int n = int(cut.source.size());
+    columns = cut.source;
+    m.numColumns = n;
+    m.rows.assign(std::size_t(n) * std::size_t(n), 0.0);
+    for (int v = 0; v < n; ++v) m.rows[std::size_t(v) * n + v] = 1.0;
+    return m;
+}
+
+LocalMesh refineTowards(const LocalMesh& mesh, int child, int rings, const Options& options, WalkScratch& scratch,
+                        std::vector<int>* nodes) {
+    const Topology& p = mesh.topology;
+    const ChildNumbering num = numberChildren(p, rulesOf(options.scheme).triangleSplit());
+    const Topology c = refineTopology(p, num, options.creaseMethod, TopologyDetail::Full);
+    int childFace = child;
+    for (int f = 0; f < mesh.face; ++f) childFace += num.splitsInFour(p.faceSize(f)) ? 4 : p.faceSize(f);
+
+    PatchCut cut;
+    cutPatch(c, c.verticesOfFace(childFace), rings, scratch, cut, true);
+    LocalMesh out = meshOfCut(cut, childFace, options);
+
+    std::vector<std::uint8_t> wanted(std::size_t(c.numVertices), 0);
+    for (int v : cut.source) wanted[v] = 1;
+    const StencilTableD table = buildLevelStencils<StencilTableD>(p, num, options, nullptr, &wanted);
+    const int columns = out.numColumns = mesh.numColumns;
+    out.rows.assign(cut.source.size() * std::size_t(columns), 0.0);
+    for (std::size_t i = 0; i < cut.source.size(); ++i) {
+        double* row = out.rows.data() + i * columns;
+        const int v = cut.source[i], first = table.offsets[v];
+        for (int k = first; k < first + table.sizes[v]; ++k) {
+            const double w = table.weights[k];
+            const double* parent = mesh.row(table.indices[k]);
+            for (int j = 0; j < columns; ++j) row[j] += w * parent[j];
+        }
+    }
+
+    if (nodes) {
+        const IndexSpan corners = p.verticesOfFace(mesh.face), edges = p.edgesOfFace(mesh.face);
+        auto local = [&](int childVertex) { return positionOf(cut.source, childVertex); };
+        auto vertexPoint = [&](int i) { return local(num.vertexPoint(corners[i])); };
+        auto edgePoint = [&](int i) { return local(num.edgePoint(edges[i])); };
+        if (corners.size() == 4)
+            *nodes = {vertexPoint(0), edgePoint(0), vertexPoint(1), edgePoint(3), local(num.facePoint[mesh.face]),
+                      edgePoint(1),   vertexPoint(3), edgePoint(2), vertexPoint(2)};
+        else if (corners.size() == 3 && num.splitsInFour(3))
+            *nodes = {vertexPoint(0), vertexPoint(1), vertexPoint(2), edgePoint(0), edgePoint(1), edgePoint(2)};
+        else
+            throw std::logic_error("local mesh: nodes of a face that is neither a quad nor a triangle split in four");
+    }
+    return out;
+}
+
+}  // namespace internal
+}  // namespace v0
+}  // namespace quadtri

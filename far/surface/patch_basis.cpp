@@ -1,0 +1,148 @@
+// Patch bases (far/surface/patch_basis.h). The box spline's coefficients are Stam's basis
+// ("Evaluation of Loop Subdivision Surfaces", 1998) in the monomials of (s, t), as OpenSubdiv
+// tabulates them; derivatives come from differentiating the monomials.
+#include "far/surface/patch_basis.h"
+
+namespace quadtri {
+inline namespace v0 {
+namespace internal {
+
+namespace {
+
+// Uniform cubic B-spline: the four weights and their derivatives at x in [0, 1].
+void cubic(double x, double w[4], double d[4]) {
+    const double y = 1.0 - x, x2 = x * x, x3 = x2 * x;
+    w[0] = y * y * y / 6.0;
+    w[1] = (3.0 * x3 - 6.0 * x2 + 4.0) / 6.0;
+    w[2] = (-3.0 * x3 + 3.0 * x2 + 3.0 * x + 1.0) / 6.0;
+    w[3] = x3 / 6.0;
+    d[0] = -0.5 * y * y;
+    d[1] = 1.5 * x2 - 2.0 * x;
+    d[2] = -1.5 * x2 + x + 0.5;
+    d[3] = 0.5 * x2;
+}
+
+// Stam's basis times 12, one row per point, over the monomials 1, s, t, s², st, t², s³, s²t,
+// st², t³, s⁴, s³t, s²t², st³, t⁴.
+constexpr int kBoxSpline[12][15] = {
+    {1, -2, -4, 0, 6, 6, 2, 0, -6, -4, -1, -2, 0, 2, 1},
+    {1, 2, -2, 0, -6, 0, -4, 0, 6, 2, 2, 4, 0, -2, -1},
+    {0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -1, -2, 0, 0, 0},
+    {1, -4, -2, 6, 6, 0, -4, -6, 0, 2, 1, 2, 0, -2, -1},
+    {6, 0, 0, -12, -12, -12, 8, 12, 12, 8, -1, -2, 0, -2, -1},
+    {1, 4, 2, 6, 6, 0, -4, -6, -12, -4, -1, -2, 0, 4, 2},
+    {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0},
+    {1, -2, 2, 0, -6, 0, 2, 6, 0, -4, -1, -2, 0, 4, 2},
+    {1, 2, 4, 0, 6, 6, -4, -12, -6, -4, 2, 4, 0, -2, -1},
+    {0, 0, 0, 0, 0, 0, 2, 6, 6, 2, -1, -2, 0, -2, -1},
+    {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
+    {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1},
+};
+constexpr int kPowerS[15] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0};
+
+double power(double x, int n) {
+    double p = 1.0;
+    for (int i = 0; i < n; ++i) p *= x;
+    return p;
+}
+
+}  // namespace
+
+void bSplineWeights(double s, double t, double wP[16], double wDs[16], double wDt[16]) {
+    double bs[4], ds[4], bt[4], dt[4];
+    cubic(s, bs, ds);
+    cubic(t, bt, dt);
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            wP[4 * j + i] = bs[i] * bt[j];
+            wDs[4 * j + i] = ds[i] * bt[j];
+            wDt[4 * j + i] = bs[i] * dt[j];
+        }
+}
+
+void boxSplineWeights(double s, double t, double wP[12], double wDs[12], double wDt[12]) {
+    double m[15], ms[15], mt[15];
+    for (int k = 0; k < 15; ++k) {
+        const int a = kPowerS[k], b = (k == 0 ? 0 : k < 3 ? 1 : k < 6 ? 2 : k < 10 ? 3 : 4) - a;
+        m[k] = power(s, a) * power(t, b);
+        ms[k] = a > 0 ? a * power(s, a - 1) * power(t, b) : 0.0;
+        mt[k] = b > 0 ? b * power(s, a) * power(t, b - 1) : 0.0;
+    }
+    for (int i = 0; i < 12; ++i) {
+        double p = 0, d = 0, e = 0;
+        for (int k = 0; k < 15; ++k) {
+            p += kBoxSpline[i][k] * m[k];
+            d += kBoxSpline[i][k] * ms[k];
+            e += kBoxSpline[i][k] * mt[k];
+        }
+        wP[i] = p / 12.0;
+        wDs[i] = d / 12.0;
+        wDt[i] = e / 12.0;
+    }
+}
+
+void bilinearWeights(double s, double t, double wP[4], double wDs[4], double wDt[4]) {
+    wP[0] = (1 - s) * (1 - t);
+    wP[1] = s * (1 - t);
+    wP[2] = s * t;
+    wP[3] = (1 - s) * t;
+    wDs[0] = -(1 - t);
+    wDs[1] = 1 - t;
+    wDs[2] = t;
+    wDs[3] = -t;
+    wDt[0] = -(1 - s);
+    wDt[1] = -s;
+    wDt[2] = s;
+    wDt[3] = 1 - s;
+}
+
+void linearWeights(double s, double t, double wP[3], double wDs[3], double wDt[3]) {
+    wP[0] = 1 - s - t;
+    wP[1] = s;
+    wP[2] = t;
+    wDs[0] = -1;
+    wDs[1] = 1;
+    wDs[2] = 0;
+    wDt[0] = -1;
+    wDt[1] = 0;
+    wDt[2] = 1;
+}
+
+void quadraticQuadWeights(double s, double t, double wP[9], double wDs[9], double wDt[9]) {
+    // Lagrange polynomials of the nodes 0, ½, 1 and their derivatives.
+    auto lagrange = [](double x, double l[3], double d[3]) {
+        l[0] = 2 * (x - 0.5) * (x - 1);
+        l[1] = -4 * x * (x - 1);
+        l[2] = 2 * x * (x - 0.5);
+        d[0] = 4 * x - 3;
+        d[1] = 4 - 8 * x;
+        d[2] = 4 * x - 1;
+    };
+    double ls[3], ds[3], lt[3], dt[3];
+    lagrange(s, ls, ds);
+    lagrange(t, lt, dt);
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            wP[3 * j + i] = ls[i] * lt[j];
+            wDs[3 * j + i] = ds[i] * lt[j];
+            wDt[3 * j + i] = ls[i] * dt[j];
+        }
+}
+
+void quadraticTriangleWeights(double s, double t, double wP[6], double wDs[6], double wDt[6]) {
+    const double l[3] = {1 - s - t, s, t};
+    const double ls[3] = {-1, 1, 0}, lt[3] = {-1, 0, 1};  // derivatives of the barycentrics
+    for (int i = 0; i < 3; ++i) {
+        wP[i] = l[i] * (2 * l[i] - 1);
+        wDs[i] = (4 * l[i] - 1) * ls[i];
+        wDt[i] = (4 * l[i] - 1) * lt[i];
+        const int j = (i + 1) % 3;  // the midpoint of edge i, between corners i and i + 1
+        wP[3 + i] = 4 * l[i] * l[j];
+        wDs[3 + i] = 4 * (ls[i] * l[j] + l[i] * ls[j]);
+        wDt[3 + i] = 4 * (lt[i] * l[j] + l[i] * lt[j]);
+    }
+}
+
+}  // namespace internal
+}  // namespace v0
+}  // namespace quadtri

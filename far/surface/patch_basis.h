@@ -1,0 +1,29 @@
+// The bases of the patches a point is evaluated on (docs/surface.md): weights of the position and
+// of its s and t derivatives over the patch's points, at (s, t) of the patch's own domain.
+#pragma once
+
+namespace quadtri {
+inline namespace v0 {
+namespace internal {
+
+// Bicubic uniform B-spline over a 4 × 4 grid, point (i, j) at [4 j + i] (i along s); the patch
+// spans the middle square, (s, t) = (0, 0) at point (1, 1).
+void bSplineWeights(double s, double t, double wP[16], double wDs[16], double wDt[16]);
+
+// Quartic box spline (Loop's regular patch) over 12 points of the triangular lattice, at lattice
+// coordinates (a, b) (a along s, b along t, 60° apart): (0,-1) (1,-1) (2,-1) (-1,0) (0,0) (1,0)
+// (2,0) (-1,1) (0,1) (1,1) (-1,2) (0,2); the patch is the triangle of points 4, 5, 8.
+void boxSplineWeights(double s, double t, double wP[12], double wDs[12], double wDt[12]);
+
+// Bilinear over a quad's corners in order ((0,0), (1,0), (1,1), (0,1)); linear over a triangle's.
+void bilinearWeights(double s, double t, double wP[4], double wDs[4], double wDt[4]);
+void linearWeights(double s, double t, double wP[3], double wDs[3], double wDt[3]);
+
+// Quadratic interpolation of 9 nodes of a quad, row by row at s, t in {0, ½, 1}; of 6 nodes of a
+// triangle, its corners then the midpoints of its edges 0 (corner 0 to 1), 1 and 2.
+void quadraticQuadWeights(double s, double t, double wP[9], double wDs[9], double wDt[9]);
+void quadraticTriangleWeights(double s, double t, double wP[6], double wDs[6], double wDt[6]);
+
+}  // namespace internal
+}  // namespace v0
+}  // namespace quadtri
