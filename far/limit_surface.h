@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <quadtri/export.h>
+#include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/options.h>
 #include <quadtri/far/topology.h>
 
@@ -31,6 +32,8 @@ struct QUADTRI_API FaceParameterization {
     static FaceParameterization of(Scheme scheme, int faceSize);
     // Whether (u, v) lies in the face's domain, within `tolerance` of its edges.
     bool contains(double u, double v, double tolerance = 1e-9) const;
+    // QuadSubFaces: the sub-face whose square holds (u, v) within `tolerance`, or -1.
+    int subFaceAt(double u, double v, double tolerance = 1e-9) const;
     // The (u, v) of corner i.
     void cornerCoord(int corner, double& u, double& v) const;
     // The (u, v) at t in [0, 1] along edge i (from corner i to corner i + 1).
@@ -93,6 +96,13 @@ public:
     // floats apart): its position and, where not null, dPdu and dPdv (`width` floats each).
     void evaluate(int face, double u, double v, const float* control, int width, int stride, float* position,
                   float* dPdu = nullptr, float* dPdv = nullptr) const;
+
+    // The stencils of `count` points (faces[i], u[i], v[i]) as one table over the control
+    // vertices, stencil i for point i (as OpenSubdiv's LimitStencilTableFactory takes location
+    // arrays): the evaluators' EvalLimitStencils then give positions, tangents and unit normals
+    // of all of them, on any back end. Throws SurfaceError, naming the point's index, for a point
+    // `stencil` refuses.
+    LimitStencilTable stencilTable(int count, const int* faces, const double* u, const double* v) const;
 
 private:
     void check(int face, double u, double v) const;

@@ -14,6 +14,7 @@
 #include <quadtri/far/draw_buffers.h>
 #include <quadtri/far/limit_surface.h>
 #include <quadtri/far/refiner.h>
+#include <quadtri/osd/cpu_evaluator.h>
 #include "tools/gltf_io.h"
 #include "tools/obj_io.h"
 #include "tools/vertex_cache.h"
@@ -224,11 +225,8 @@ int runEvaluate(const EvaluateArgs& args) {
     // Every line is read and checked before anything is evaluated or written.
     std::ifstream in(args.points);
     if (!in) throw io::ObjError(args.points + ": cannot be read");
-    struct Point {
-        int face;
-        double u, v;
-    };
-    std::vector<Point> points;
+    std::vector<int> faces;  // the points, 0-based faces
+    std::vector<double> us, vs;
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
         const std::string where = args.points + ":" + std::to_string(number) + ": ";
@@ -249,20 +247,31 @@ int runEvaluate(const EvaluateArgs& args) {
         if (!p.contains(u, v))
             throw io::ObjError(where + "(" + line.substr(first) + "): (u, v) is outside face " + std::to_string(face) +
                                "'s domain, " + p.describe());
-        points.push_back({f, u, v});
+        faces.push_back(f);
+        us.push_back(u);
+        vs.push_back(v);
     }
+    // One limit table for all the points, evaluated as every limit table is (unit normals
+    // included, with the evaluators' rule for degenerate tangents).
+    const std::size_t n = faces.size();
+    const LimitStencilTable table = surface.stencilTable(int(n), faces.data(), us.data(), vs.data());
+    std::vector<float> position(3 * n), du(3 * n), dv(3 * n), normal(3 * n);
+    const BufferDescriptor xyz(0, 3, 3);
+    if (n > 0)
+        CpuEvaluator::EvalLimitStencils(mesh.positions.data(), xyz, position.data(), xyz, du.data(), xyz, dv.data(), xyz,
+                                        normal.data(), xyz, table);
     std::ostringstream text;
     text.precision(9);
-    for (const Point& q : points) {
-        float x[3], du[3], dv[3];
-        surface.evaluate(q.face, q.u, q.v, mesh.positions.data(), 3, 3, x, du, dv);
-        double n[3] = {double(du[1]) * dv[2] - double(du[2]) * dv[1], double(du[2]) * dv[0] - double(du[0]) * dv[2],
-                       double(du[0]) * dv[1] - double(du[1]) * dv[0]};
-        const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        for (double& c : n) c = length > 0 ? c / length : 0.0;
-        text << x[0] << ' ' << x[1] << ' ' << x[2] << ' ' << n[0] << ' ' << n[1] << ' ' << n[2];
-        if (args.derivatives)
-            text << ' ' << du[0] << ' ' << du[1] << ' ' << du[2] << ' ' << dv[0] << ' ' << dv[1] << ' ' << dv[2];
+    auto triple = [&text](const std::vector<float>& a, std::size_t i) {
+        text << ' ' << a[3 * i] << ' ' << a[3 * i + 1] << ' ' << a[3 * i + 2];
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        text << position[3 * i] << ' ' << position[3 * i + 1] << ' ' << position[3 * i + 2];
+        triple(normal, i);
+        if (args.derivatives) {
+            triple(du, i);
+            triple(dv, i);
+        }
         text << '\n';
     }
     if (args.output.empty()) {
@@ -275,7 +284,7 @@ int runEvaluate(const EvaluateArgs& args) {
         std::remove(args.output.c_str());
         throw io::ObjError(args.output + ": cannot be written");
     }
-    std::fprintf(stderr, "%s: %zu points -> %s\n", args.mesh.input.c_str(), points.size(), args.output.c_str());
+    std::fprintf(stderr, "%s: %zu points -> %s\n", args.mesh.input.c_str(), n, args.output.c_str());
     return 0;
 }
 

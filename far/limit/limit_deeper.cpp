@@ -16,8 +16,7 @@ namespace quadtri {
 inline namespace v0 {
 namespace internal {
 
-void cutPatch(const Topology& t, IndexSpan seeds, int rings, WalkScratch& scratch, PatchCut& cut,
-              bool boundariesUnsharp) {
+void cutPatch(const Topology& t, IndexSpan seeds, int rings, WalkScratch& scratch, PatchCut& cut) {
     for (std::vector<int>* a :
          {&cut.source, &cut.faceSource, &cut.sizes, &cut.corners, &cut.creasePairs, &cut.holes, &cut.cornerVerts})
         a->clear();
@@ -54,8 +53,7 @@ void cutPatch(const Topology& t, IndexSpan seeds, int rings, WalkScratch& scratc
         for (int u : t.verticesOfFace(f)) *corner++ = local.value(u);
         if (t.faceHole[f]) cut.holes.push_back(int(i));
         for (int e : t.edgesOfFace(f))
-            if (isSharp(t.edgeSharpness[e]) && !(boundariesUnsharp && (t.edgeFlags[e] & kEdgeBoundary)))
-                sharpEdges.push_back(e);
+            if (isSharp(t.edgeSharpness[e]) && !(t.edgeFlags[e] & kEdgeBoundary)) sharpEdges.push_back(e);
     }
     cut.faceSource.assign(faces.begin(), faces.end());
     std::sort(sharpEdges.begin(), sharpEdges.end());

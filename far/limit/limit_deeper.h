@@ -41,11 +41,9 @@ constexpr int kPatchRings = 6;
 
 // Into `cut` (its arrays reused), in `scratch`'s working space: the faces within `rings` face
 // rings of the `seeds` (patch vertices 0, 1, ... in seed order), the first ring's faces first.
-// With `boundariesUnsharp`, boundary edges keep no crease: the cut's own rebuild makes its
-// boundaries sharp again, and a cut of a refined cut would otherwise carry the first cut's rim
-// inside as creases (far/surface/local_mesh.cpp).
-void cutPatch(const Topology& level, IndexSpan seeds, int rings, WalkScratch& scratch, PatchCut& cut,
-              bool boundariesUnsharp = false);
+// Boundary edges are cut without their sharpness: the cut's rebuild makes every boundary sharp
+// again, and a cut of a refined cut would otherwise carry the first cut's rim inside as creases.
+void cutPatch(const Topology& level, IndexSpan seeds, int rings, WalkScratch& scratch, PatchCut& cut);
 // kPatchRings rings around one vertex.
 inline void cutPatch(const Topology& level, int vertex, WalkScratch& scratch, PatchCut& cut) {
     cutPatch(level, IndexSpan(&vertex, &vertex + 1), kPatchRings, scratch, cut);

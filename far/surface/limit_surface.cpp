@@ -11,6 +11,7 @@
 #include "far/limit/limit_eigen.h"
 #include "far/limit/limit_mask.h"
 #include "far/limit/limit_ring.h"
+#include "far/limit/limit_table.h"
 #include "far/schemes/scheme.h"
 #include "far/surface/local_mesh.h"
 #include "far/surface/patch_basis.h"
@@ -64,33 +65,15 @@ int descend(bool quad, Where& w) {
     return child;
 }
 
-// The sub-face of an n-gon's (u, v) and the point in it.
-int subFaceAt(const FaceParameterization& p, double u, double v, Where& w) {
-    int best = 0;
-    double bestDistance = 1e300;
-    for (int i = 0; i < p.faceSize; ++i) {
-        const double x = i % p.gridWidth, y = i / p.gridWidth;
-        const double du = std::max({x - u, u - x - 0.5, 0.0}), dv = std::max({y - v, v - y - 0.5, 0.0});
-        if (du + dv < bestDistance) {
-            bestDistance = du + dv;
-            best = i;
-        }
-    }
-    const double x = best % p.gridWidth, y = best / p.gridWidth;
+// The sub-face of an n-gon's (u, v), checked to hold it, and the point in it.
+int enterSubFace(const FaceParameterization& p, double u, double v, Where& w) {
+    const int i = p.subFaceAt(u, v);
     static constexpr double kTwice[2][2] = {{2, 0}, {0, 2}};
     w.s = u;
     w.t = v;
-    w.map(kTwice, -2 * x, -2 * y, false);
-    return best;
+    w.map(kTwice, -2.0 * (i % p.gridWidth), -2.0 * (i / p.gridWidth), false);
+    return i;
 }
-
-// Weights over a local mesh's vertices, merged by vertex.
-struct LocalWeights {
-    LimitMask mask;
-    void add(const std::vector<int>& points, const double* p, const double* ds, const double* dt) {
-        for (std::size_t i = 0; i < points.size(); ++i) mask.add(points[i], p[i], ds[i], dt[i]);
-    }
-};
 
 }  // namespace
 
@@ -147,11 +130,11 @@ void LimitSurface::stencil(int face, double u, double v, LimitPointStencil& out)
     const FaceParameterization param = FaceParameterization::of(o.scheme, base_->faceSize(face));
     int depth = 0;
     if (param.type == FaceParameterization::Type::QuadSubFaces) {
-        mesh = refineTowards(mesh, subFaceAt(param, u, v, w), rings, o, scratch);
+        mesh = refineTowards(mesh, enterSubFace(param, u, v, w), rings, o, scratch);
         depth = 1;
     }
 
-    LocalWeights local;
+    LimitMask local;  // weights over the final local mesh's vertices
     std::vector<int> points;
     double wP[16], wDs[16], wDt[16];
     for (;; ++depth) {
@@ -163,7 +146,7 @@ void LimitSurface::stencil(int face, double u, double v, LimitPointStencil& out)
             case PatchKind::Bilinear: bilinearWeights(w.s, w.t, wP, wDs, wDt); break;
             default: linearWeights(w.s, w.t, wP, wDs, wDt); break;
             }
-            local.add(points, wP, wDs, wDt);
+            for (std::size_t i = 0; i < points.size(); ++i) local.add(points[i], wP[i], wDs[i], wDt[i]);
             break;
         }
         const bool quad = mesh.topology.faceSize(mesh.face) == 4;
@@ -183,7 +166,7 @@ void LimitSurface::stencil(int face, double u, double v, LimitPointStencil& out)
                 limit.clear();
                 rules.limitMask(LimitVertex{next.topology, o, ring, limitRule(next.topology, ring)}, cache, limit);
                 for (int k = 0; k < limit.size(); ++k)
-                    local.mask.add(limit.indices[k], wP[i] * limit.position[k], wDs[i] * limit.position[k],
+                    local.add(limit.indices[k], wP[i] * limit.position[k], wDs[i] * limit.position[k],
                                    wDt[i] * limit.position[k]);
             }
             mesh = std::move(next);
@@ -196,9 +179,9 @@ void LimitSurface::stencil(int face, double u, double v, LimitPointStencil& out)
     // Over the base neighbourhood, then the control vertices; derivatives back to (u, v).
     const int n = mesh.numColumns;
     std::vector<double> p(n, 0.0), ds(n, 0.0), dt(n, 0.0);
-    for (int k = 0; k < local.mask.size(); ++k) {
-        const double* row = mesh.row(local.mask.indices[k]);
-        const double a = local.mask.position[k], b = local.mask.du[k], c = local.mask.dv[k];
+    for (int k = 0; k < local.size(); ++k) {
+        const double* row = mesh.row(local.indices[k]);
+        const double a = local.position[k], b = local.du[k], c = local.dv[k];
         for (int j = 0; j < n; ++j) {
             p[j] += a * row[j];
             ds[j] += b * row[j];
@@ -216,6 +199,24 @@ void LimitSurface::stencil(int face, double u, double v, LimitPointStencil& out)
         out.du.push_back(ds[j] * w.k[0][0] + dt[j] * w.k[1][0]);
         out.dv.push_back(ds[j] * w.k[0][1] + dt[j] * w.k[1][1]);
     }
+}
+
+LimitStencilTable LimitSurface::stencilTable(int count, const int* faces, const double* u, const double* v) const {
+    LimitStencilTableD table;
+    table.numSourceVertices = numControlVertices();
+    LimitPointStencil s;
+    for (int i = 0; i < count; ++i) {
+        try {
+            stencil(faces[i], u[i], v[i], s);
+        } catch (const SurfaceError& e) {
+            throw SurfaceError("point " + std::to_string(i) + ": " + e.what());
+        }
+        table.offsets.push_back(int(table.indices.size()));
+        table.sizes.push_back(s.size());
+        table.indices.insert(table.indices.end(), s.indices.begin(), s.indices.end());
+        for (int k = 0; k < s.size(); ++k) table.weights.insert(table.weights.end(), {s.position[k], s.du[k], s.dv[k]});
+    }
+    return toFloatTable(table);
 }
 
 void LimitSurface::evaluate(int face, double u, double v, const float* control, int width, int stride,

@@ -43,7 +43,7 @@ LocalMesh meshOfCut(const PatchCut& cut, int face, const Options& options) {
 LocalMesh cutBase(const Topology& base, int face, int rings, const Options& options, WalkScratch& scratch,
                   std::vector<int>& columns) {
     PatchCut cut;
-    cutPatch(base, base.verticesOfFace(face), rings, scratch, cut, true);
+    cutPatch(base, base.verticesOfFace(face), rings, scratch, cut);
     LocalMesh m = meshOfCut(cut, face, options);
     const int n = int(cut.source.size());
     columns = cut.source;
@@ -62,7 +62,7 @@ LocalMesh refineTowards(const LocalMesh& mesh, int child, int rings, const Optio
     for (int f = 0; f < mesh.face; ++f) childFace += num.splitsInFour(p.faceSize(f)) ? 4 : p.faceSize(f);
 
     PatchCut cut;
-    cutPatch(c, c.verticesOfFace(childFace), rings, scratch, cut, true);
+    cutPatch(c, c.verticesOfFace(childFace), rings, scratch, cut);
     LocalMesh out = meshOfCut(cut, childFace, options);
 
     std::vector<std::uint8_t> wanted(std::size_t(c.numVertices), 0);

@@ -31,14 +31,18 @@ bool FaceParameterization::contains(double u, double v, double tolerance) const 
     case Type::Triangle:
         return u >= -tolerance && v >= -tolerance && u + v <= 1 + tolerance;
     case Type::QuadSubFaces:
-        for (int i = 0; i < faceSize; ++i) {
-            const double x = i % gridWidth, y = i / gridWidth;
-            if (u >= x - tolerance && u <= x + 0.5 + tolerance && v >= y - tolerance && v <= y + 0.5 + tolerance)
-                return true;
-        }
-        return false;
+        return subFaceAt(u, v, tolerance) >= 0;
     }
     return false;
+}
+
+int FaceParameterization::subFaceAt(double u, double v, double tolerance) const {
+    for (int i = 0; i < faceSize; ++i) {
+        const double x = i % gridWidth, y = i / gridWidth;
+        if (u >= x - tolerance && u <= x + 0.5 + tolerance && v >= y - tolerance && v <= y + 0.5 + tolerance)
+            return i;
+    }
+    return -1;
 }
 
 void FaceParameterization::cornerCoord(int corner, double& u, double& v) const {

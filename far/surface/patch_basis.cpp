@@ -40,6 +40,18 @@ constexpr int kBoxSpline[12][15] = {
 };
 constexpr int kPowerS[15] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0};
 
+// The tensor product of two n-point univariate bases (values l, derivatives d), point (i, j) at
+// [n j + i].
+void tensorProduct(int n, const double* ls, const double* ds, const double* lt, const double* dt, double* wP,
+                   double* wDs, double* wDt) {
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            wP[n * j + i] = ls[i] * lt[j];
+            wDs[n * j + i] = ds[i] * lt[j];
+            wDt[n * j + i] = ls[i] * dt[j];
+        }
+}
+
 double power(double x, int n) {
     double p = 1.0;
     for (int i = 0; i < n; ++i) p *= x;
@@ -52,12 +64,7 @@ void bSplineWeights(double s, double t, double wP[16], double wDs[16], double wD
     double bs[4], ds[4], bt[4], dt[4];
     cubic(s, bs, ds);
     cubic(t, bt, dt);
-    for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i) {
-            wP[4 * j + i] = bs[i] * bt[j];
-            wDs[4 * j + i] = ds[i] * bt[j];
-            wDt[4 * j + i] = bs[i] * dt[j];
-        }
+    tensorProduct(4, bs, ds, bt, dt, wP, wDs, wDt);
 }
 
 void boxSplineWeights(double s, double t, double wP[12], double wDs[12], double wDt[12]) {
@@ -121,12 +128,7 @@ void quadraticQuadWeights(double s, double t, double wP[9], double wDs[9], doubl
     double ls[3], ds[3], lt[3], dt[3];
     lagrange(s, ls, ds);
     lagrange(t, lt, dt);
-    for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) {
-            wP[3 * j + i] = ls[i] * lt[j];
-            wDs[3 * j + i] = ds[i] * lt[j];
-            wDt[3 * j + i] = ls[i] * dt[j];
-        }
+    tensorProduct(3, ls, ds, lt, dt, wP, wDs, wDt);
 }
 
 void quadraticTriangleWeights(double s, double t, double wP[6], double wDs[6], double wDt[6]) {
