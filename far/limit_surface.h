@@ -85,6 +85,8 @@ public:
     int numFaces() const;
     int numControlVertices() const;
     const Options& options() const { return options_; }
+    // The control mesh's topology (the Refiner's level 0): its faces, edges and vertices.
+    const Topology& topology() const { return *base_; }
     FaceParameterization parameterization(int face) const;
     bool isHole(int face) const;
 
@@ -100,7 +102,8 @@ public:
     // The stencils of `count` points (faces[i], u[i], v[i]) as one table over the control
     // vertices, stencil i for point i (as OpenSubdiv's LimitStencilTableFactory takes location
     // arrays): the evaluators' EvalLimitStencils then give positions, tangents and unit normals
-    // of all of them, on any back end. Throws SurfaceError, naming the point's index, for a point
+    // of all of them, on any back end. The stencils are built on oneTBB's threads where there
+    // are (the same table on any number). Throws SurfaceError, naming the point's index, for a point
     // `stencil` refuses.
     LimitStencilTable stencilTable(int count, const int* faces, const double* u, const double* v) const;
 

@@ -14,6 +14,7 @@
 #include <quadtri/far/draw_buffers.h>
 #include <quadtri/far/limit_surface.h>
 #include <quadtri/far/refiner.h>
+#include <quadtri/far/tessellation.h>
 #include <quadtri/osd/cpu_evaluator.h>
 #include "tools/gltf_io.h"
 #include "tools/obj_io.h"
@@ -180,13 +181,20 @@ const std::vector<std::string>& renderShadings() {
     return names;
 }
 
-int runRefine(const RefineArgs& args) {
-    if (args.output.empty()) throw io::ObjError("-o: the output file name is empty");
-    std::string extension = std::filesystem::path(args.output).extension().string();
+// Whether `output` names a glTF file (.gltf, .glb) rather than OBJ; an empty name or another
+// extension is refused before any work.
+bool writesGltf(const std::string& output) {
+    if (output.empty()) throw io::ObjError("-o: the output file name is empty");
+    std::string extension = std::filesystem::path(output).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     const bool gltf = extension == ".gltf" || extension == ".glb";
     if (!extension.empty() && extension != ".obj" && !gltf)
-        throw io::ObjError(args.output + ": writes OBJ (.obj) or glTF (.gltf, .glb), not " + extension);
+        throw io::ObjError(output + ": writes OBJ (.obj) or glTF (.gltf, .glb), not " + extension);
+    return gltf;
+}
+
+int runRefine(const RefineArgs& args) {
+    const bool gltf = writesGltf(args.output);
     io::ObjMesh mesh = loadMesh(args.mesh);
     const Options options = makeOptions(args.mesh, mesh);
     Refiner refiner = makeRefiner(mesh, options);
@@ -285,6 +293,45 @@ int runEvaluate(const EvaluateArgs& args) {
         throw io::ObjError(args.output + ": cannot be written");
     }
     std::fprintf(stderr, "%s: %zu points -> %s\n", args.mesh.input.c_str(), n, args.output.c_str());
+    return 0;
+}
+
+int runTessellate(const TessellateArgs& args) {
+    const bool gltf = writesGltf(args.output);
+    io::ObjMesh mesh = loadMesh(args.mesh);
+    const Options options = makeOptions(args.mesh, mesh);
+    Refiner refiner = makeRefiner(mesh, options);
+    const LimitSurface surface(refiner);
+    const Tessellation tess(surface, args.rate);
+    // The points in blocks, each block's limit table built, evaluated and dropped: memory stays
+    // that of the points, whatever their number.
+    const std::size_t n = std::size_t(tess.numPoints());
+    Surface points;
+    points.positions.resize(3 * n);
+    points.normals.resize(3 * n);
+    std::vector<float> du(3 * n), dv(3 * n);
+    const BufferDescriptor xyz(0, 3, 3);
+    constexpr int kBlock = 1 << 16;
+    for (int first = 0; first < tess.numPoints(); first += kBlock) {
+        const int count = std::min(kBlock, tess.numPoints() - first);
+        const LimitStencilTable table = surface.stencilTable(count, tess.faces() + first, tess.u() + first, tess.v() + first);
+        const std::size_t at = 3 * std::size_t(first);
+        CpuEvaluator::EvalLimitStencils(mesh.positions.data(), xyz, &points.positions[at], xyz, &du[at], xyz, &dv[at], xyz,
+                                        &points.normals[at], xyz, table);
+    }
+    checkFinite(points.positions, mesh, 0, options.scheme);
+    Topology triangles;  // the index buffer as a mesh, to write as refine writes its levels
+    triangles.numVertices = tess.numPoints();
+    triangles.faceVerts = tess.triangles();
+    triangles.faceOffsets.resize(std::size_t(tess.numTriangles()) + 1);
+    for (int t = 0; t <= tess.numTriangles(); ++t) triangles.faceOffsets[std::size_t(t)] = 3 * t;
+    const LevelFaces faces(triangles);
+    if (gltf)
+        io::writeGltf(args.output, triangleMeshOf(faces, points, {}));
+    else
+        io::writeObj(args.output, points.positions.data(), faces, points.normals.data());
+    std::printf("%s: rate %d, %d points, %d triangles -> %s\n", args.mesh.input.c_str(), args.rate, tess.numPoints(),
+                tess.numTriangles(), args.output.c_str());
     return 0;
 }
 

@@ -155,8 +155,16 @@ struct EvaluateArgs {
     bool derivatives = false;
 };
 
+// `quadtri tessellate`: every face at a rate per edge, on the limit surface (docs/command_line.md).
+struct TessellateArgs {
+    MeshArgs mesh;
+    int rate = 4;
+    std::string output;  // .obj, or .glb / .gltf
+};
+
 int runRefine(const RefineArgs& args);
 int runEvaluate(const EvaluateArgs& args);
+int runTessellate(const TessellateArgs& args);
 int runInfo(const InfoArgs& args);
 int runDemo(const DemoArgs& args);
 // Exit status 2, with the reason on stderr, without a Vulkan device (or in a build without Vulkan).

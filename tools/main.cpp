@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include <quadtri/far/options.h>
+#include <quadtri/far/tessellation.h>
 #include <quadtri/version.h>
 #include "tools/byte_size.h"
 #include "tools/commands.h"
@@ -290,6 +291,16 @@ int main(int argc, char** argv) {
                             "Output file, one 'x y z nx ny nz' line per point (default: standard output)");
     evaluateCmd->add_flag("--derivatives", evaluate.derivatives, "Add dPdu and dPdv to each line");
 
+    cli::TessellateArgs tessellate;
+    CLI::App* tessellateCmd = app.add_subcommand(
+        "tessellate", "Cut every face into triangles on the limit surface, watertight, with limit normals "
+                      "(docs/surface.md)");
+    addMeshFlags(*tessellateCmd, tessellate.mesh);
+    tessellateCmd->add_option("--rate,-r", tessellate.rate, "Segments per edge (edges of n-gons, and of triangles under "
+                                                            "catmull-clark, take the next even number)")
+        ->check(CLI::Range(1, Tessellation::kMaxRate));
+    tessellateCmd->add_option("-o,--output", tessellate.output, "Output file: .obj, or .gltf / .glb")->required();
+
     cli::InfoArgs info;
     CLI::App* infoCmd = app.add_subcommand("info", "Print topology statistics and table sizes per level");
     addMeshFlags(*infoCmd, info.mesh);
@@ -344,6 +355,7 @@ int main(int argc, char** argv) {
 
     const std::string& input = *refineCmd    ? refine.mesh.input
                                : *evaluateCmd ? evaluate.mesh.input
+                               : *tessellateCmd ? tessellate.mesh.input
                                : *infoCmd   ? info.mesh.input
                                : *renderCmd ? render.mesh.input
                                : *viewCmd   ? viewer.mesh.input
@@ -351,6 +363,7 @@ int main(int argc, char** argv) {
     try {
         if (*refineCmd) return cli::runRefine(refine);
         if (*evaluateCmd) return cli::runEvaluate(evaluate);
+        if (*tessellateCmd) return cli::runTessellate(tessellate);
         if (*infoCmd) return cli::runInfo(info);
         if (*renderCmd) return cli::runRender(render);
         if (*viewCmd) return view::runView(viewer);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include <quadtri/far/refiner.h>
+#include "far/internal/parallel.h"
 #include "far/limit/limit_eigen.h"
 #include "far/limit/limit_mask.h"
 #include "far/limit/limit_ring.h"
@@ -202,19 +203,30 @@ void LimitSurface::stencil(int face, double u, double v, LimitPointStencil& out)
 }
 
 LimitStencilTable LimitSurface::stencilTable(int count, const int* faces, const double* u, const double* v) const {
-    LimitStencilTableD table;
-    table.numSourceVertices = numControlVertices();
-    LimitPointStencil s;
     for (int i = 0; i < count; ++i) {
         try {
-            stencil(faces[i], u[i], v[i], s);
+            check(faces[i], u[i], v[i]);
         } catch (const SurfaceError& e) {
             throw SurfaceError("point " + std::to_string(i) + ": " + e.what());
         }
-        table.offsets.push_back(int(table.indices.size()));
-        table.sizes.push_back(s.size());
-        table.indices.insert(table.indices.end(), s.indices.begin(), s.indices.end());
-        for (int k = 0; k < s.size(); ++k) table.weights.insert(table.weights.end(), {s.position[k], s.du[k], s.dv[k]});
+    }
+    LimitStencilTableD table;
+    table.numSourceVertices = numControlVertices();
+    // Blocks of points side by side, each point's stencil its own: the same table on any threads.
+    constexpr int kBlock = 4096;
+    std::vector<LimitPointStencil> block(std::size_t(std::min(count, kBlock)));
+    for (int first = 0; first < count; first += kBlock) {
+        const int size = std::min(kBlock, count - first);
+        parallel::forEachRange(0, size, 16, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i) stencil(faces[first + i], u[first + i], v[first + i], block[std::size_t(i)]);
+        });
+        for (int i = 0; i < size; ++i) {
+            const LimitPointStencil& s = block[std::size_t(i)];
+            table.offsets.push_back(int(table.indices.size()));
+            table.sizes.push_back(s.size());
+            table.indices.insert(table.indices.end(), s.indices.begin(), s.indices.end());
+            for (int k = 0; k < s.size(); ++k) table.weights.insert(table.weights.end(), {s.position[k], s.du[k], s.dv[k]});
+        }
     }
     return toFloatTable(table);
 }
