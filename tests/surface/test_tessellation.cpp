@@ -51,7 +51,6 @@ void expectWatertight(const Tessellation& tess, const Topology& t, const std::st
     }
     std::map<std::pair<int, int>, int> onBaseEdge;  // segment -> faces of its base edge (holes left out)
     for (int e = 0; e < t.numEdges(); ++e) {
-        if (tess.firstEdgePoint(e) < 0 && tess.edgeRate(e) > 1) continue;  // an edge of holes only
         int faces = 0;
         for (int f : t.facesOfEdge(e)) faces += t.faceHole[std::size_t(f)] ? 0 : 1;
         if (faces == 0) continue;
@@ -83,14 +82,24 @@ void expectWatertight(const Tessellation& tess, const Topology& t, const std::st
     EXPECT_EQ(std::count(used.begin(), used.end(), false), 0) << what << ": points in no triangle";
 }
 
+// The case's mesh refined to level 0 under its scheme, and its limit surface.
+struct CaseSurface {
+    RefinedMesh refined;
+    LimitSurface surface;
+    explicit CaseSurface(const Case& c) : refined(refineWith(c)), surface(*refined.refiner) {}
+    static RefinedMesh refineWith(const Case& c) {
+        Options options;
+        options.scheme = c.scheme;
+        return refineMesh(c.mesh, 0, options);
+    }
+};
+
 class Tessellated : public testing::TestWithParam<Case> {};
 
 TEST_P(Tessellated, IsWatertightAtUniformAndPerEdgeRates) {
-    const auto& [mesh, scheme] = GetParam();
-    Options options;
-    options.scheme = scheme;
-    const RefinedMesh r = refineMesh(mesh, 0, options);
-    const LimitSurface surface(*r.refiner);
+    const std::string& mesh = GetParam().mesh;
+    const CaseSurface c(GetParam());
+    const LimitSurface& surface = c.surface;
     const Topology& t = surface.topology();
     for (int rate : {1, 2, 3, 5}) {
         const Tessellation tess(surface, rate);
@@ -113,10 +122,9 @@ TEST_P(Tessellated, IsWatertightAtUniformAndPerEdgeRates) {
 // Each triangle's normal agrees with the limit normal at its corners: no triangle is folded over.
 TEST_P(Tessellated, FacesTheWayTheSurfaceDoes) {
     const auto& [mesh, scheme] = GetParam();
-    Options options;
-    options.scheme = scheme;
-    const RefinedMesh r = refineMesh(mesh, 0, options);
-    const LimitSurface surface(*r.refiner);
+    const CaseSurface c(GetParam());
+    const LimitSurface& surface = c.surface;
+    const RefinedMesh& r = c.refined;
     std::vector<int> rates(std::size_t(surface.topology().numEdges()));
     std::mt19937 random(5);
     for (int& rate : rates) rate = kSanitized ? 2 + int(random() % 2) : 3 + int(random() % 5);
