@@ -107,12 +107,35 @@ public:
     // `stencil` refuses.
     LimitStencilTable stencilTable(int count, const int* faces, const double* u, const double* v) const;
 
+    // Face-varying channels (the Refiner's TopologyDescriptor::fvarChannels, UVs) at the same
+    // (face, u, v): the limit of the channel's values as Refiner::fvarLimitStencils gives it at
+    // the vertices of every level, under Options::fvarLinearInterpolation (docs/surface.md,
+    // "Face-varying values"). Weights are over the channel's own values (numFVarValues(c));
+    // du and dv are the value's derivatives along the face's u and v. Throws SurfaceError as
+    // stencil does, and for a channel out of range.
+    int numFVarChannels() const { return int(channels_.size()); }
+    int numFVarValues(int channel) const;
+    // Face f's value of the channel at each of its corners (the channel's value indices).
+    IndexSpan fvarValuesOfFace(int channel, int face) const;
+    void fvarStencil(int channel, int face, double u, double v, LimitPointStencil& out) const;
+    void evaluateFVar(int channel, int face, double u, double v, const float* values, int width, int stride,
+                      float* value, float* dValuedu = nullptr, float* dValuedv = nullptr) const;
+    LimitStencilTable fvarStencilTable(int channel, int count, const int* faces, const double* u,
+                                       const double* v) const;
+
 private:
+    struct Channel;  // a channel's value mesh (limit_surface.cpp)
+
     void check(int face, double u, double v) const;
+    const Channel& channel(int c) const;
+    template <class StencilOf>
+    LimitStencilTable tableOf(int count, const int* faces, const double* u, const double* v, int numSources,
+                              const StencilOf& stencilOf) const;
 
     Options options_;
     LimitSurfaceOptions surfaceOptions_;
     std::shared_ptr<const Topology> base_;
+    std::vector<std::shared_ptr<const Channel>> channels_;
 };
 
 }  // namespace v0

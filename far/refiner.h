@@ -148,6 +148,8 @@ public:
     std::size_t bytes() const;
 
 private:
+    friend class LimitSurface;  // reads the face-varying channels' value meshes
+
     void checkRefinedLevel(const char* what, int L) const;  // TopologyError unless 1 <= L <= maxLevel()
     void completeLevel(int L);  // rebuilds a faces-only level in full
     void completeTable(int L);  // builds level L's per-level table where it has none, within the budget

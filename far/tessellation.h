@@ -49,6 +49,19 @@ public:
     // The point of base vertex v, or -1 for a vertex of no face but holes.
     int vertexPoint(int vertex) const { return vertexPoints_[std::size_t(vertex)]; }
 
+    // Face-varying values (UVs) on the tessellation. A point inside a face has one value; a point
+    // on a base edge or vertex has one per distinct value of the channel around it (two across a
+    // UV seam, one where the faces agree), each at the (u, v) of a face on its side. Evaluate them
+    // with LimitSurface::fvarStencilTable(channel, numValues(), faces, u, v); cornerValues gives
+    // each triangle corner's value, in triangles()' order.
+    struct FVarPoints {
+        std::vector<int> faces;
+        std::vector<double> u, v;
+        std::vector<int> cornerValues;
+        int numValues() const { return int(faces.size()); }
+    };
+    FVarPoints fvarPoints(const LimitSurface& surface, int channel) const;
+
     // Limits on what one tessellation may hold; a rate over kMaxRate or more than kMaxPoints
     // points throws SurfaceError before anything is allocated.
     static constexpr int kMaxRate = 4096;

@@ -235,10 +235,11 @@ Sdc::Options::FVarLinearInterpolation sdcFVar(FVarLinearInterpolation fvar) {
 namespace {
 
 // OpenSubdiv's refiner of `mesh` with its UVs as face-varying channel 0, refined uniformly to
-// `maxLevel` (full topology in the last level, which the limit needs).
+// `maxLevel` (full topology in the last level, which the limit needs; not refined for -1).
 std::unique_ptr<Far::TopologyRefiner> createFVarRefiner(const io::ObjMesh& mesh, OsdScheme scheme,
                                                         BoundaryInterpolation boundary, CreaseMethod creaseMethod,
-                                                        FVarLinearInterpolation fvar, int maxLevel) {
+                                                        FVarLinearInterpolation fvar, int maxLevel,
+                                                        bool leftHanded = false) {
     if (!mesh.hasUVs()) throw std::invalid_argument("osdFaceVarying: the mesh has no UVs");
     Sdc::Options sdcOptions;
     sdcOptions.SetVtxBoundaryInterpolation(sdcBoundary(boundary));
@@ -252,8 +253,10 @@ std::unique_ptr<Far::TopologyRefiner> createFVarRefiner(const io::ObjMesh& mesh,
     channel.valueIndices = mesh.faceUVs.data();
     desc.numFVarChannels = 1;
     desc.fvarChannels = &channel;
+    desc.isLeftHanded = leftHanded;
 
     std::unique_ptr<Far::TopologyRefiner> refiner = refinerOf(desc, scheme, sdcOptions);
+    if (maxLevel < 0) return refiner;
     Far::TopologyRefiner::UniformOptions uniform(maxLevel);
     uniform.fullTopologyInLastLevel = true;
     refiner->RefineUniform(uniform);
@@ -663,18 +666,22 @@ PositionMatch matchPositions(const std::vector<float>& ours, const std::vector<f
     return m;
 }
 
-OsdSurfacePoints osdSurfacePoints(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
-                                  CreaseMethod creaseMethod, int approxLevel, const std::vector<int>& faces,
-                                  const std::vector<double>& uv, bool leftHanded) {
-    std::unique_ptr<Far::TopologyRefiner> refiner = createRefiner(mesh, scheme, boundary, creaseMethod, false, leftHanded);
+namespace {
+
+// Each point on its face's Bfr surface with both approximation levels at `approxLevel`:
+// `face(factory, f, surface)` initializes face f's surface (false: none), `data` holds `width`
+// doubles per point the surfaces read.
+template <class InitFace>
+OsdSurfacePoints bfrPoints(const Far::TopologyRefiner& refiner, int approxLevel, const InitFace& face,
+                           const std::vector<double>& data, int width, const std::vector<int>& faces,
+                           const std::vector<double>& uv) {
     Bfr::RefinerSurfaceFactory<>::Options options;
     options.SetApproxLevelSmooth(approxLevel);
     options.SetApproxLevelSharp(approxLevel);
-    const Bfr::RefinerSurfaceFactory<> factory(*refiner, options);
-    const std::vector<double> meshPoints(mesh.positions.begin(), mesh.positions.end());
-    const Bfr::Surface<double>::PointDescriptor xyz(3);
+    const Bfr::RefinerSurfaceFactory<> factory(refiner, options);
+    const Bfr::Surface<double>::PointDescriptor layout(width);
     OsdSurfacePoints out;
-    out.position.assign(3 * faces.size(), 0.0);
+    out.position.assign(std::size_t(width) * faces.size(), 0.0);
     out.du = out.dv = out.position;
     out.evaluated.assign(faces.size(), 0);
     Bfr::Surface<double> surface;
@@ -683,15 +690,41 @@ OsdSurfacePoints osdSurfacePoints(const io::ObjMesh& mesh, OsdScheme scheme, Bou
     for (std::size_t i = 0; i < faces.size(); ++i) {
         if (faces[i] != prepared) {
             prepared = -1;
-            if (!factory.InitVertexSurface(faces[i], &surface)) continue;
-            patchPoints.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
-            surface.PreparePatchPoints(meshPoints.data(), xyz, patchPoints.data(), xyz);
+            if (!face(factory, faces[i], surface)) continue;
+            patchPoints.resize(std::size_t(surface.GetNumPatchPoints()) * std::size_t(width));
+            surface.PreparePatchPoints(data.data(), layout, patchPoints.data(), layout);
             prepared = faces[i];
         }
-        surface.Evaluate(&uv[2 * i], patchPoints.data(), xyz, &out.position[3 * i], &out.du[3 * i], &out.dv[3 * i]);
+        const std::size_t at = std::size_t(width) * i;
+        surface.Evaluate(&uv[2 * i], patchPoints.data(), layout, &out.position[at], &out.du[at], &out.dv[at]);
         out.evaluated[i] = 1;
     }
     return out;
+}
+
+}  // namespace
+
+OsdSurfacePoints osdSurfacePoints(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                                  CreaseMethod creaseMethod, int approxLevel, const std::vector<int>& faces,
+                                  const std::vector<double>& uv, bool leftHanded) {
+    std::unique_ptr<Far::TopologyRefiner> refiner = createRefiner(mesh, scheme, boundary, creaseMethod, false, leftHanded);
+    auto vertexSurface = [](const Bfr::RefinerSurfaceFactory<>& factory, int f, Bfr::Surface<double>& surface) {
+        return factory.InitVertexSurface(f, &surface);
+    };
+    return bfrPoints(*refiner, approxLevel, vertexSurface, std::vector<double>(mesh.positions.begin(), mesh.positions.end()),
+                     3, faces, uv);
+}
+
+OsdSurfacePoints osdSurfaceUVs(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                               CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int approxLevel,
+                               const std::vector<int>& faces, const std::vector<double>& uv, bool leftHanded) {
+    std::unique_ptr<Far::TopologyRefiner> refiner =
+        createFVarRefiner(mesh, scheme, boundary, creaseMethod, fvar, -1, leftHanded);
+    auto uvSurface = [](const Bfr::RefinerSurfaceFactory<>& factory, int f, Bfr::Surface<double>& surface) {
+        return factory.InitFaceVaryingSurface(f, &surface, 0);
+    };
+    return bfrPoints(*refiner, approxLevel, uvSurface, std::vector<double>(mesh.uvs.begin(), mesh.uvs.end()), 2, faces,
+                     uv);
 }
 
 }  // namespace quadtri::test

@@ -86,6 +86,11 @@ struct OsdSurfacePoints {
 OsdSurfacePoints osdSurfacePoints(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
                                   CreaseMethod creaseMethod, int approxLevel, const std::vector<int>& faces,
                                   const std::vector<double>& uv, bool leftHanded = false);
+// The same for the mesh's UVs (channel 0 from `vt`) under `fvar`: Bfr's face-varying surface
+// (InitFaceVaryingSurface), 2 doubles per point in position, du and dv.
+OsdSurfacePoints osdSurfaceUVs(const io::ObjMesh& mesh, OsdScheme scheme, BoundaryInterpolation boundary,
+                               CreaseMethod creaseMethod, FVarLinearInterpolation fvar, int approxLevel,
+                               const std::vector<int>& faces, const std::vector<double>& uv, bool leftHanded = false);
 
 // OpenSubdiv's refined positions of one level (PrimvarRefiner::Interpolate) and its varying
 // interpolation of the control positions there (InterpolateVarying), both in its vertex order.

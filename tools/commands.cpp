@@ -227,6 +227,8 @@ int runEvaluate(const EvaluateArgs& args) {
     const Options options = makeOptions(args.mesh, mesh);
     Refiner refiner = makeRefiner(mesh, options);
     const LimitSurface surface(refiner);
+    if (args.uv && surface.numFVarChannels() == 0)
+        throw io::ObjError(args.mesh.input + ": has no UVs (vt): --uv needs them");
     if (surface.numFaces() != mesh.numFaces())
         throw io::ObjError(args.mesh.input + ": a face repeats a vertex and was split or left out; " +
                            "evaluate needs the file's faces as they are");
@@ -268,6 +270,15 @@ int runEvaluate(const EvaluateArgs& args) {
     if (n > 0)
         CpuEvaluator::EvalLimitStencils(mesh.positions.data(), xyz, position.data(), xyz, du.data(), xyz, dv.data(), xyz,
                                         normal.data(), xyz, table);
+    std::vector<float> uv;
+    if (args.uv) {
+        const LimitStencilTable uvTable = surface.fvarStencilTable(0, int(n), faces.data(), us.data(), vs.data());
+        uv.resize(2 * n);
+        const BufferDescriptor st(0, 2, 2);
+        if (n > 0)
+            CpuEvaluator::EvalLimitStencils(mesh.uvs.data(), st, uv.data(), st, nullptr, {}, nullptr, {}, nullptr, {},
+                                            uvTable);
+    }
     std::ostringstream text;
     text.precision(9);
     auto triple = [&text](const std::vector<float>& a, std::size_t i) {
@@ -280,6 +291,7 @@ int runEvaluate(const EvaluateArgs& args) {
             triple(du, i);
             triple(dv, i);
         }
+        if (args.uv) text << ' ' << uv[2 * i] << ' ' << uv[2 * i + 1];
         text << '\n';
     }
     if (args.output.empty()) {
@@ -320,6 +332,23 @@ int runTessellate(const TessellateArgs& args) {
                                         &points.normals[at], xyz, table);
     }
     checkFinite(points.positions, mesh, 0, options.scheme);
+    // UVs per (point, value around it): a point on a UV seam is written once per side.
+    Tessellation::FVarPoints uvPoints;
+    std::vector<float> uvs;
+    if (surface.numFVarChannels() > 0) {
+        uvPoints = tess.fvarPoints(surface, 0);
+        uvs.resize(2 * std::size_t(uvPoints.numValues()));
+        const BufferDescriptor st(0, 2, 2);
+        for (int first = 0; first < uvPoints.numValues(); first += kBlock) {
+            const int count = std::min(kBlock, uvPoints.numValues() - first);
+            const LimitStencilTable table = surface.fvarStencilTable(0, count, uvPoints.faces.data() + first,
+                                                                     uvPoints.u.data() + first, uvPoints.v.data() + first);
+            CpuEvaluator::EvalLimitStencils(mesh.uvs.data(), st, &uvs[2 * std::size_t(first)], st, nullptr, {}, nullptr,
+                                            {}, nullptr, {}, table);
+        }
+    }
+    const io::ObjUVs objUVs =
+        uvs.empty() ? io::ObjUVs{} : io::ObjUVs{uvs.data(), uvPoints.numValues(), uvPoints.cornerValues.data()};
     Topology triangles;  // the index buffer as a mesh, to write as refine writes its levels
     triangles.numVertices = tess.numPoints();
     triangles.faceVerts = tess.triangles();
@@ -327,9 +356,9 @@ int runTessellate(const TessellateArgs& args) {
     for (int t = 0; t <= tess.numTriangles(); ++t) triangles.faceOffsets[std::size_t(t)] = 3 * t;
     const LevelFaces faces(triangles);
     if (gltf)
-        io::writeGltf(args.output, triangleMeshOf(faces, points, {}));
+        io::writeGltf(args.output, triangleMeshOf(faces, points, objUVs));
     else
-        io::writeObj(args.output, points.positions.data(), faces, points.normals.data());
+        io::writeObj(args.output, points.positions.data(), faces, points.normals.data(), objUVs);
     std::printf("%s: rate %d, %d points, %d triangles -> %s\n", args.mesh.input.c_str(), args.rate, tess.numPoints(),
                 tess.numTriangles(), args.output.c_str());
     return 0;

@@ -153,6 +153,7 @@ struct EvaluateArgs {
     std::string points;  // one `face u v` per line, faces from 1 in the order of the file's f lines
     std::string output;  // empty: standard output
     bool derivatives = false;
+    bool uv = false;  // add the limit UV (the file's vt) to each line
 };
 
 // `quadtri tessellate`: every face at a rate per edge, on the limit surface (docs/command_line.md).

@@ -290,11 +290,13 @@ int main(int argc, char** argv) {
     evaluateCmd->add_option("-o,--output", evaluate.output,
                             "Output file, one 'x y z nx ny nz' line per point (default: standard output)");
     evaluateCmd->add_flag("--derivatives", evaluate.derivatives, "Add dPdu and dPdv to each line");
+    evaluateCmd->add_flag("--uv", evaluate.uv,
+                          "Add the limit UV (from the file's vt, under --uv-interpolation) to each line, last");
 
     cli::TessellateArgs tessellate;
     CLI::App* tessellateCmd = app.add_subcommand(
         "tessellate", "Cut every face into triangles on the limit surface, watertight, with limit normals "
-                      "(docs/surface.md)");
+                      "and, where the file has vt, limit UVs (docs/surface.md)");
     addMeshFlags(*tessellateCmd, tessellate.mesh);
     tessellateCmd->add_option("--rate,-r", tessellate.rate, "Segments per edge (edges of n-gons, and of triangles under "
                                                             "catmull-clark, take the next even number)")

@@ -64,6 +64,12 @@ public:
     Topology limitMesh(int L, const Options& options) const;
     LimitStencilTableD limitStencils(int L, const Topology& limitMesh, const Options& options) const;
 
+    // Level 0's value mesh with the sharpness LimitSurface's local refinement starts from
+    // (docs/surface.md, "Face-varying values"): as refinement reads it, a dependent value kept as
+    // a corner. valueOfVertex()[p] is the channel's value at its vertex p.
+    Topology surfaceMesh() const;
+    const std::vector<int>& valueOfVertex() const { return controlValueOf_; }
+
     // What refining the last level once more would allocate at least (SchemeRules'
     // estimate over the value mesh).
     std::size_t estimateNextLevelBytes(const SchemeRules& rules) const;

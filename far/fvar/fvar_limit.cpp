@@ -31,6 +31,14 @@ Topology FVarChannelRefinement::limitMesh(int L, const Options& options) const {
     return mesh;
 }
 
+Topology FVarChannelRefinement::surfaceMesh() const {
+    const Level& level = levels_[0];
+    Topology mesh = level.values;
+    for (int p = 0; p < mesh.numVertices; ++p)
+        if (level.kind[std::size_t(p)] == FVarKind::Dependent) mesh.vertSharpness[std::size_t(p)] = kInfiniteSharpness;
+    return mesh;
+}
+
 LimitStencilTableD FVarChannelRefinement::limitStencils(int L, const Topology& limitMesh, const Options& options) const {
     // Rings start where the value mesh's start, level by level, as the mesh's do (its faces are
     // the mesh's): a matched value's tangents are its vertex's.

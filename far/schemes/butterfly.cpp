@@ -322,7 +322,7 @@ namespace {
 class CatmarkButterflyRules : public SchemeRules {
 public:
     // Butterfly interpolates: its triangles are no polynomial patch.
-    SurfacePatches surfacePatches() const override { return {false, true, false, true}; }
+    SurfacePatches surfacePatches() const override { return {false, true, false, true, false}; }
     const char* name() const override { return "catmark-butterfly"; }
     const char* description() const override {
         return "Catmull-Clark on quads, interpolating Butterfly on triangles";

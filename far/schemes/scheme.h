@@ -85,6 +85,10 @@ struct SurfacePatches {
     // The patch's points must have only faces of the patch's own kind around them: where the
     // scheme's masks near the other kind (its seam rules) reach the corners' masks.
     bool pureNeighbourhood = false;
+    // With every edge and vertex infinitely sharp (a face-varying channel under
+    // FVarLinearInterpolation::All) each face is its bilinear (linear) patch: false where a crease
+    // rule is not the midpoint (Butterfly's 4-point curves).
+    bool sharpIsLinear = true;
 };
 
 // One scheme, stateless: one object per scheme, registered in schemes.cpp.

@@ -29,11 +29,22 @@ int positionOf(const std::vector<int>& list, int x) {
     return int(it - list.begin());
 }
 
-LocalMesh meshOfCut(const PatchCut& cut, int face, const Options& options) {
+// The cut's rim looks like a boundary and is sharpened with it: harmless, since the rim's
+// vertices are wrong already and a sharp vertex reaches no further than a smooth one.
+void applySharpen(Topology& t, Sharpen sharpen) {
+    if (sharpen == Sharpen::None) return;
+    for (int v = 0; v < t.numVertices; ++v)
+        if (sharpen == Sharpen::All || (t.vertFlags[std::size_t(v)] & kVertexBoundary))
+            t.vertSharpness[std::size_t(v)] = kInfiniteSharpness;
+    if (sharpen == Sharpen::All) std::fill(t.edgeSharpness.begin(), t.edgeSharpness.end(), kInfiniteSharpness);
+}
+
+LocalMesh meshOfCut(const PatchCut& cut, int face, const Options& options, Sharpen sharpen) {
     LocalMesh m;
     m.topology = cutTopology(cut, cutOptions(options));
     if (m.topology.numFaces() != int(cut.faceSource.size()))
         throw std::logic_error("local mesh: the cut lost a face when rebuilt");
+    applySharpen(m.topology, sharpen);
     m.face = positionOf(cut.faceSource, face);
     return m;
 }
@@ -41,10 +52,10 @@ LocalMesh meshOfCut(const PatchCut& cut, int face, const Options& options) {
 }  // namespace
 
 LocalMesh cutBase(const Topology& base, int face, int rings, const Options& options, WalkScratch& scratch,
-                  std::vector<int>& columns) {
+                  std::vector<int>& columns, Sharpen sharpen) {
     PatchCut cut;
     cutPatch(base, base.verticesOfFace(face), rings, scratch, cut);
-    LocalMesh m = meshOfCut(cut, face, options);
+    LocalMesh m = meshOfCut(cut, face, options, sharpen);
     const int n = int(cut.source.size());
     columns = cut.source;
     m.numColumns = n;
@@ -54,7 +65,7 @@ LocalMesh cutBase(const Topology& base, int face, int rings, const Options& opti
 }
 
 LocalMesh refineTowards(const LocalMesh& mesh, int child, int rings, const Options& options, WalkScratch& scratch,
-                        std::vector<int>* nodes) {
+                        std::vector<int>* nodes, Sharpen sharpen) {
     const Topology& p = mesh.topology;
     const ChildNumbering num = numberChildren(p, rulesOf(options.scheme).triangleSplit());
     const Topology c = refineTopology(p, num, options.creaseMethod, TopologyDetail::Full);
@@ -63,7 +74,7 @@ LocalMesh refineTowards(const LocalMesh& mesh, int child, int rings, const Optio
 
     PatchCut cut;
     cutPatch(c, c.verticesOfFace(childFace), rings, scratch, cut);
-    LocalMesh out = meshOfCut(cut, childFace, options);
+    LocalMesh out = meshOfCut(cut, childFace, options, sharpen);
 
     std::vector<std::uint8_t> wanted(std::size_t(c.numVertices), 0);
     for (int v : cut.source) wanted[v] = 1;

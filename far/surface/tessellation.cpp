@@ -3,6 +3,8 @@
 #include <quadtri/far/tessellation.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -298,6 +300,57 @@ void Tessellation::build(const LimitSurface& surface, std::vector<int> rates) {
             b.quad(sub);
         }
     }
+}
+
+// Each triangle corner's value is keyed by its point and the channel's values that place it: a
+// vertex point by the face's value at the vertex, an edge point by the face's values at both
+// ends of the edge (faces that agree there interpolate the same values along it), an inner
+// point by itself.
+Tessellation::FVarPoints Tessellation::fvarPoints(const LimitSurface& surface, int channel) const {
+    const Topology& t = surface.topology();
+    surface.numFVarValues(channel);  // the range check
+    std::vector<int> vertexOf(std::size_t(numPoints()), -1), edgeOf(std::size_t(numPoints()), -1);
+    for (int v = 0; v < t.numVertices; ++v)
+        if (vertexPoints_[std::size_t(v)] >= 0) vertexOf[std::size_t(vertexPoints_[std::size_t(v)])] = v;
+    for (int e = 0; e < t.numEdges(); ++e)
+        for (int j = 0; j + 1 < edgeRates_[std::size_t(e)] && edgePoints_[std::size_t(e)] >= 0; ++j)
+            edgeOf[std::size_t(edgePoints_[std::size_t(e)] + j)] = e;
+
+    FVarPoints out;
+    std::map<std::array<int, 3>, int> valueOfKey;  // points on base edges and vertices
+    std::vector<int> innerValue(std::size_t(numPoints()), -1);
+    for (std::size_t c = 0; c < triangles_.size(); ++c) {
+        const int point = triangles_[c], face = triangleFaces_[c / 3];
+        std::array<int, 3> key{point, -1, -1};
+        double u = u_[std::size_t(point)], v = v_[std::size_t(point)];
+        const FaceParameterization p = surface.parameterization(face);
+        const IndexSpan corners = t.verticesOfFace(face), edges = t.edgesOfFace(face);
+        const IndexSpan values = surface.fvarValuesOfFace(channel, face);
+        const int n = corners.size();
+        if (const int vertex = vertexOf[std::size_t(point)]; vertex >= 0) {
+            int k = 0;
+            while (corners[k] != vertex) ++k;
+            key[1] = values[k];
+            p.cornerCoord(k, u, v);
+        } else if (const int edge = edgeOf[std::size_t(point)]; edge >= 0) {
+            int k = 0;
+            while (edges[k] != edge) ++k;
+            const bool forward = t.edgeVerts[std::size_t(2 * edge)] == corners[k];
+            key[1] = values[forward ? k : (k + 1) % n];
+            key[2] = values[forward ? (k + 1) % n : k];
+            const int rate = edgeRates_[std::size_t(edge)], j = point - edgePoints_[std::size_t(edge)] + 1;
+            p.edgeCoord(k, forward ? double(j) / rate : 1.0 - double(j) / rate, u, v);
+        }
+        int& value = key[1] < 0 ? innerValue[std::size_t(point)] : valueOfKey.emplace(key, -1).first->second;
+        if (value < 0) {
+            value = out.numValues();
+            out.faces.push_back(face);
+            out.u.push_back(u);
+            out.v.push_back(v);
+        }
+        out.cornerValues.push_back(value);
+    }
+    return out;
 }
 
 }  // namespace v0

@@ -14,6 +14,7 @@
 #include "tests/limit/limit_support.h"
 #include "tests/osd_reference.h"
 #include "tests/sanitized.h"
+#include "tests/surface/surface_support.h"
 #include "tests/test_support.h"
 
 namespace quadtri::test {
@@ -134,74 +135,6 @@ TEST(LocalRefinement, KeepsTheMeshsOwnVerticesAroundTheFollowedFace) {
 
 // ---- dyadic points against the uniform limit ----------------------------------------------
 
-using UV = std::array<double, 2>;
-
-// Calls visit(vertex of level L, u, v) for the corners of every level-L descendant of base face
-// `face`, (u, v) in the face's parameterization: each child's corners are its parent's corners,
-// edge midpoints and centre in (u, v), as the children are in space.
-void forEachDescendantCorner(const Refiner& r, int face, int L, const std::function<void(int, double, double)>& visit) {
-    const Scheme scheme = r.options().scheme;
-    const bool inFour = FaceParameterization::of(scheme, 3).type == FaceParameterization::Type::Triangle;
-    auto firstChild = [&](int level, int f) {
-        const LevelFaces faces = r.faces(level);
-        int first = 0;
-        for (int g = 0; g < f; ++g) first += (faces.faceSize(g) == 3 && inFour) ? 4 : faces.faceSize(g);
-        return first;
-    };
-    auto mid = [](UV a, UV b) { return UV{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}; };
-    std::function<void(int, int, std::vector<UV>)> walk = [&](int level, int f, std::vector<UV> c) {
-        if (level == L) {
-            const IndexSpan verts = r.faces(L).verticesOfFace(f);
-            for (int i = 0; i < verts.size(); ++i) visit(verts[i], c[i][0], c[i][1]);
-            return;
-        }
-        const int first = firstChild(level, f), n = int(c.size());
-        if (n == 4) {
-            const UV centre = mid(mid(c[0], c[2]), mid(c[1], c[3]));
-            for (int i = 0; i < 4; ++i)
-                walk(level + 1, first + i, {c[i], mid(c[i], c[(i + 1) % 4]), centre, mid(c[(i + 3) % 4], c[i])});
-        } else {
-            for (int i = 0; i < 3; ++i)
-                walk(level + 1, first + i, {c[i], mid(c[i], c[(i + 1) % 3]), mid(c[(i + 2) % 3], c[i])});
-            walk(level + 1, first + 3, {mid(c[0], c[1]), mid(c[1], c[2]), mid(c[2], c[0])});
-        }
-    };
-    const FaceParameterization p = FaceParameterization::of(scheme, r.faces(0).faceSize(face));
-    std::vector<UV> corners(p.type == FaceParameterization::Type::QuadSubFaces ? 0 : p.faceSize);
-    for (std::size_t i = 0; i < corners.size(); ++i) p.cornerCoord(int(i), corners[i][0], corners[i][1]);
-    if (!corners.empty()) return walk(0, face, corners);
-    if (L == 0) return;
-    const int first = firstChild(0, face);
-    for (int i = 0; i < p.faceSize; ++i) {
-        const double x = i % p.gridWidth, y = i / p.gridWidth;
-        walk(1, first + i, {{x, y}, {x + 0.5, y}, {x + 0.5, y + 0.5}, {x, y + 0.5}});
-    }
-}
-
-// Whether the uniform limit of `vertex` is exact: OpenSubdiv's Limit (and quadtri's, which equals
-// it) counts a semi-sharp edge or vertex as sharp and gives a dart the smooth mask, both exact
-// only in the limit of refinement.
-bool exactUniformLimit(const Topology& t, int vertex) {
-    auto exactSharpness = [](float s) { return s == 0.0f || s >= kInfiniteSharpness; };
-    if (!exactSharpness(t.vertSharpness[vertex])) return false;
-    int sharp = 0;
-    for (int e : t.edgesOfVertex(vertex)) {
-        if (!exactSharpness(t.edgeSharpness[e])) return false;
-        if (t.edgeSharpness[e] != 0.0f || (t.edgeFlags[e] & kEdgeBoundary)) ++sharp;
-    }
-    return sharp != 1;
-}
-
-// Catmull-clark keeps a face with a collapsed edge (`4 3 5 5`) as OpenSubdiv does; its (u, v)
-// are not yet checked here (docs/surface.md, "Limits").
-bool repeatsACorner(const Topology& t, int f) {
-    const IndexSpan c = t.verticesOfFace(f);
-    for (int i = 0; i < c.size(); ++i)
-        for (int j = 0; j < i; ++j)
-            if (c[i] == c[j]) return true;
-    return false;
-}
-
 struct Dyadic {
     double worstPosition = 0;  // over the bounding-box diagonal
     double worstNormal = 0;    // radians
@@ -222,7 +155,8 @@ Dyadic compareWithUniformLimit(const std::string& mesh, Scheme scheme, int L, in
     const int faces = surface.numFaces(), step = std::max(1, faces / maxFaces);
     for (int f = 0; f < faces; f += step) {
         if (surface.isHole(f) || repeatsACorner(r.refiner->level(0), f)) continue;
-        forEachDescendantCorner(*r.refiner, f, L, [&](int vertex, double u, double v) {
+        forEachDescendantCorner(*r.refiner, f, L, [&](int levelFace, int corner, double u, double v) {
+            const int vertex = r.refiner->faces(L).verticesOfFace(levelFace)[corner];
             if (!exactUniformLimit(level, vertex)) {
                 ++d.inexactReference;
                 return;
@@ -278,22 +212,13 @@ BfrComparison compareWithBfr(const std::string& meshName, Scheme scheme, int per
     const RefinedMesh r = refineMesh(meshName, 0, options);
     const LimitSurface surface(*r.refiner);
     std::mt19937 random(7);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<int> faces;
     std::vector<double> uv;
     for (int f = 0; f < surface.numFaces(); ++f) {
         if (surface.isHole(f) || repeatsACorner(r.refiner->level(0), f)) continue;
         const FaceParameterization p = surface.parameterization(f);
         for (int k = 0; k < perFace; ++k) {
-            double u = unit(random), v = unit(random);
-            if (p.type == FaceParameterization::Type::Triangle && u + v > 1) {
-                u = 1 - u;
-                v = 1 - v;
-            } else if (p.type == FaceParameterization::Type::QuadSubFaces) {
-                const int i = k % p.faceSize;
-                u = i % p.gridWidth + 0.5 * u;
-                v = i / p.gridWidth + 0.5 * v;
-            }
+            const auto [u, v] = randomPointOf(p, k, random);
             faces.push_back(f);
             uv.insert(uv.end(), {u, v});
         }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
 #include <random>
 #include <utility>
@@ -207,6 +209,70 @@ TEST(Tessellation, AtRateTwoToTheLIsUniformLevelL) {
                 worst = std::max(worst, best / diagonal);
             }
             EXPECT_LT(worst, 2e-6) << what;
+        }
+    }
+}
+
+// UVs: at rate 2^L each (point, value) is a corner of uniform level L as (limit position, limit
+// UV), one per value of the level: a point on a UV seam carries both sides' UVs.
+TEST(Tessellation, UVsAtRateTwoToTheLAreUniformLevelLsLimitCorners) {
+    for (const char* mesh : {"uv/mixed_torus_uv.obj", "uv/split_plane_uv.obj", "osd/catmark_cube.obj"}) {
+        for (Scheme scheme : {Scheme::SchaeferWarren, Scheme::CatmullClark}) {
+            for (int L = 1; L <= (kSanitized ? 1 : 2); ++L) {
+                Options options;
+                options.scheme = scheme;
+                const io::ObjMesh obj = io::readObj(meshPath(mesh));
+                FVarChannel channel;
+                Refiner refiner(obj.descriptor(channel), obj.applyTags(options));
+                refiner.refineUniform(L, TopologyDetail::Full);
+                const LimitSurface surface(refiner);
+                const Tessellation tess(surface, 1 << L);
+                const Tessellation::FVarPoints values = tess.fvarPoints(surface, 0);
+                const std::string what = std::string(mesh) + " " + toString(scheme) + " level " + std::to_string(L);
+                ASSERT_EQ(values.numValues(), refiner.numFVarValues(0, L)) << what;
+                ASSERT_EQ(values.cornerValues.size(), tess.triangles().size()) << what;
+
+                auto uvPoints = [](const std::vector<float>& uv) {
+                    std::vector<float> out;
+                    for (std::size_t i = 0; i < uv.size(); i += 2) out.insert(out.end(), {uv[i], uv[i + 1], 0.0f});
+                    return out;
+                };
+                const LimitData position =
+                    applyLimit(surface.stencilTable(tess.numPoints(), tess.faces(), tess.u(), tess.v()), obj.positions);
+                const LimitData uv = applyLimit(surface.fvarStencilTable(0, values.numValues(), values.faces.data(),
+                                                                         values.u.data(), values.v.data()),
+                                                uvPoints(obj.uvs));
+                using Corner = std::array<double, 5>;
+                std::vector<Corner> ours(std::size_t(values.numValues()));
+                for (std::size_t c = 0; c < values.cornerValues.size(); ++c) {
+                    const Vec3 &p = position.position[std::size_t(tess.triangles()[c])],
+                               &t = uv.position[std::size_t(values.cornerValues[c])];
+                    ours[std::size_t(values.cornerValues[c])] = {p[0], p[1], p[2], t[0], t[1]};
+                }
+                const std::vector<std::vector<float>> levels = evaluateLevels(refiner, obj.positions, 3);
+                const LimitData levelPosition = applyLimit(refiner.limitStencils(L), levels[std::size_t(L)]);
+                const LimitData levelUV = applyLimit(refiner.fvarFactorizedLimitStencils(0, L), uvPoints(obj.uvs));
+                std::vector<Corner> reference;
+                const LevelFaces faces = refiner.faces(L);
+                const int* verts = faces.vertices();
+                const IndexSpan corners = refiner.fvarValues(0, L);
+                for (int k = 0; k < corners.size(); ++k) {
+                    const Vec3 &p = levelPosition.position[std::size_t(verts[k])],
+                               &t = levelUV.position[std::size_t(corners[k])];
+                    reference.push_back({p[0], p[1], p[2], t[0], t[1]});
+                }
+                double worst = 0;
+                for (const Corner& a : ours) {
+                    double best = 1e300;
+                    for (const Corner& b : reference) {
+                        double d = 0;
+                        for (int i = 0; i < 5; ++i) d = std::max(d, std::abs(a[std::size_t(i)] - b[std::size_t(i)]));
+                        best = std::min(best, d);
+                    }
+                    worst = std::max(worst, best);
+                }
+                EXPECT_LT(worst, 1e-5) << what;
+            }
         }
     }
 }

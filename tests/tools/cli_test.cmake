@@ -513,6 +513,13 @@ foreach(bad "1 0.5" "1 x 0.5" "0 0.5 0.5" "9999 0.5 0.5" "1 1.5 0.5" "1 0.5 0.5 
 endforeach()
 run(2 evaluate "${CYLINDER}" --points "${WORK}/no_such_points.txt")
 expect_contains("${ERR}" "no_such_points.txt: cannot be read")
+run(0 evaluate "${CUBE}" --points "${WORK}/points.txt" --derivatives --uv)
+string(REGEX MATCH "^[^\n]*" first "${OUT}")
+string(REGEX MATCHALL "[^ ]+" fields "${first}")
+list(LENGTH fields n)
+expect_equal("evaluate --derivatives --uv: numbers per line" "${n}" "14")
+run(2 evaluate "${CYLINDER}" --points "${WORK}/points.txt" --uv)
+expect_contains("${ERR}" "has no UVs (vt): --uv needs them")
 
 # --- tessellate: every face on the limit surface, watertight -----------------------------------
 # At rate 2^L the points are level L's vertices (each edge halved L times): as many as refine writes.
@@ -532,6 +539,12 @@ file(SIZE "${WORK}/tessellated.glb" glbSize)
 if(glbSize LESS 1000)
   message(FATAL_ERROR "${CMD}: tessellated.glb is only ${glbSize} bytes")
 endif()
+# UVs: at rate 4 one vt per value of level 2 (a point on a UV seam once per side), as refine writes.
+run(0 refine "${CUBE}" --level 2 -o "${WORK}/cube_level2.obj")
+count_lines("${WORK}/cube_level2.obj" "vt " level2Values)
+run(0 tessellate "${CUBE}" --rate 4 -o "${WORK}/tessellated.obj")
+count_lines("${WORK}/tessellated.obj" "vt " tessellatedValues)
+expect_equal("tessellate --rate 4: vt lines" "${tessellatedValues}" "${level2Values}")
 file(REMOVE "${WORK}/tessellated.obj")
 foreach(bad 0 -1 4097 x)
   run(2 tessellate "${CYLINDER}" --rate ${bad} -o "${WORK}/tessellated.obj")
