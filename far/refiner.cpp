@@ -7,6 +7,7 @@
 
 
 #include "far/fvar/fvar_channel.h"
+#include "far/surface/level_patch_builder.h"
 #include "far/schemes/scheme.h"
 #include "far/tables/level_stencils.h"
 #include "far/tables/table_factory.h"
@@ -200,6 +201,8 @@ LimitStencilTable Refiner::factorizedLimitStencils(int L) const {
                              options_.memoryBudgetBytes);
     return composeLimitTables(*this, L, budget);
 }
+
+LevelPatchTable Refiner::levelPatches(int L, int K) const { return buildLevelPatchTable(*this, L, K); }
 
 LimitStencilTable Refiner::fvarLimitStencils(int c, int L) const {
     const FVarChannelRefinement& ch = channel(c);

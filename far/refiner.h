@@ -8,6 +8,7 @@
 
 #include <quadtri/export.h>
 #include <quadtri/far/level_faces.h>
+#include <quadtri/far/level_patch_table.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/options.h>
 #include <quadtri/far/stencil_table.h>
@@ -138,6 +139,12 @@ public:
     // The same over the channel's own values: fvarLimitStencils(c, L) composed with the channel's
     // per-level tables in double, the budget kept as in factorizedLimitStencils.
     LimitStencilTable fvarFactorizedLimitStencils(int channel, int L) const;
+
+    // Level L's limit positions and normals from the regular patches of level K (0 <= K < L <=
+    // maxLevel(), levels K+1 .. L with their per-level tables): apply it to level K's data with
+    // an evaluator's EvalLevelPatches (docs/patches.md). Throws TopologyError for levels out of
+    // range or without their tables.
+    LevelPatchTable levelPatches(int L, int K) const;
 
     // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L
     // (a looser bound while level L-1 holds its faces only).

@@ -2,6 +2,7 @@
 
 #include "kernels/limit_kernel.h"
 #include "kernels/mesh_normal_kernel.h"
+#include "kernels/patch_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include "osd/internal/eval_arguments.h"
 
@@ -52,6 +53,16 @@ void CpuEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& s
                                normalDesc, table, fallback, start, end))
         return;
     kernels::evalLimitStencils(c.src, srcDesc.stride, srcDesc.length, c.arrays, c.outputs, start, end);
+}
+
+void CpuEvaluator::EvalLevelPatches(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                    const BufferDescriptor& positionDesc, float* dstNormal,
+                                    const BufferDescriptor& normalDesc, const LevelPatchTable& table) {
+    const detail::HostLevelPatchCall c =
+        detail::levelPatchCall(src, srcDesc, dstPosition, positionDesc, dstNormal, normalDesc, table);
+    kernels::evalLevelPatches(c.src, c.srcStride, c.patches, c.position, c.positionStride, c.normal, c.normalStride, 0,
+                              table.numPatches());
+    kernels::evalLimitStencils(c.src, c.srcStride, 3, c.stencils, c.stencilOutputs, 0, table.stencils.numStencils());
 }
 
 }  // namespace v0

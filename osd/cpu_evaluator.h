@@ -2,6 +2,7 @@
 #pragma once
 
 #include <quadtri/export.h>
+#include <quadtri/far/level_patch_table.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
@@ -55,6 +56,15 @@ public:
                                   float* dstDv, const BufferDescriptor& dvDesc, float* dstNormal,
                                   const BufferDescriptor& normalDesc, const LimitStencilTable& table,
                                   const MeshNormalTable* fallback = nullptr, int start = 0, int end = -1);
+
+    // Level L's limit positions and unit normals from level K's positions (src: numSourceVertices
+    // elements) through a LevelPatchTable (Refiner::levelPatches; docs/patches.md): point k of the
+    // table (level-L vertex table.vertexOf(k)) written at element k of each output given (either
+    // may be null, not both). Every descriptor of length 3. Throws std::invalid_argument on bad
+    // descriptors or an inconsistent table.
+    static void EvalLevelPatches(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                 const BufferDescriptor& positionDesc, float* dstNormal,
+                                 const BufferDescriptor& normalDesc, const LevelPatchTable& table);
 };
 
 }  // namespace v0

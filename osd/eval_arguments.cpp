@@ -121,6 +121,52 @@ bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor
     return true;
 }
 
+HostLevelPatchCall levelPatchCall(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                  const BufferDescriptor& positionDesc, float* dstNormal,
+                                  const BufferDescriptor& normalDesc, const LevelPatchTable& t) {
+    auto check = [](bool ok, const std::string& what) {
+        if (!ok) throw std::invalid_argument("EvalLevelPatches: " + what);
+    };
+    check(src != nullptr, "no source buffer");
+    check(srcDesc.isValid() && srcDesc.length == 3, "the source descriptor must be valid, of length 3");
+    check(dstPosition != nullptr || dstNormal != nullptr, "neither positions nor normals asked for");
+    check(!dstPosition || (positionDesc.isValid() && positionDesc.length == 3),
+          "the position descriptor must be valid, of length 3");
+    check(!dstNormal || (normalDesc.isValid() && normalDesc.length == 3),
+          "the normal descriptor must be valid, of length 3");
+    check(t.pointOffsets.size() == t.patchBasis.size() + 1 && t.outputOffsets.size() == t.patchBasis.size() + 1 &&
+              t.outputCells.size() == t.outputVertices.size() &&
+              t.stencilVertices.size() == std::size_t(t.stencils.numStencils()) &&
+              t.stencils.offsets.size() == t.stencils.sizes.size() &&
+              t.stencils.weightOffsets.size() == t.stencils.sizes.size() && t.rate() <= LevelPatchTable::kMaxRate &&
+              t.curveWeights.size() == 8 * std::size_t(t.rate() + 1) &&
+              t.boxSplineWeights.size() == 36 * std::size_t((t.rate() + 1) * (t.rate() + 1)),
+          "inconsistent LevelPatchTable arrays");
+    HostLevelPatchCall c{};
+    c.src = src + srcDesc.offset;
+    c.srcStride = srcDesc.stride;
+    c.patches = {t.rate(),
+                 reinterpret_cast<const std::uint8_t*>(t.patchBasis.data()),
+                 t.pointOffsets.data(),
+                 t.patchPoints.data(),
+                 t.outputOffsets.data(),
+                 t.outputCells.data(),
+                 t.curveWeights.data(),
+                 t.boxSplineWeights.data()};
+    c.position = dstPosition ? dstPosition + positionDesc.offset : nullptr;
+    c.positionStride = positionDesc.stride;
+    c.normal = dstNormal ? dstNormal + normalDesc.offset : nullptr;
+    c.normalStride = normalDesc.stride;
+    c.stencils = limitArrays(t.stencils);
+    const long first = t.numPatchOutputs();
+    c.stencilOutputs = {{c.position ? c.position + first * c.positionStride : nullptr, c.positionStride},
+                        {nullptr, 0},
+                        {nullptr, 0},
+                        {c.normal ? c.normal + first * c.normalStride : nullptr, c.normalStride},
+                        nullptr};
+    return c;
+}
+
 }  // namespace detail
 }  // namespace v0
 }  // namespace quadtri

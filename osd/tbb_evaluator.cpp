@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include "kernels/limit_kernel.h"
+#include "kernels/patch_kernel.h"
 #include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include "osd/internal/eval_arguments.h"
@@ -114,6 +115,22 @@ void TbbEvaluator::EvalLimitStencils(const float* src, const BufferDescriptor& s
     // stencil grain keeps a block's work above TBB's per-task cost with room to balance.
     forBlocks(start, end, kGrain / 2, [&](int b, int e) {
         kernels::evalLimitStencils(c.src, srcDesc.stride, srcDesc.length, c.arrays, c.outputs, b, e);
+    });
+}
+
+void TbbEvaluator::EvalLevelPatches(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                    const BufferDescriptor& positionDesc, float* dstNormal,
+                                    const BufferDescriptor& normalDesc, const LevelPatchTable& table) {
+    const detail::HostLevelPatchCall c =
+        detail::levelPatchCall(src, srcDesc, dstPosition, positionDesc, dstNormal, normalDesc, table);
+    // A patch writes about rate^2 points: blocks of patches near the stencil grain in points.
+    const int patchGrain = std::max(1, kGrain / 4 / (table.rate() * table.rate()));
+    forBlocks(0, table.numPatches(), patchGrain, [&](int b, int e) {
+        kernels::evalLevelPatches(c.src, c.srcStride, c.patches, c.position, c.positionStride, c.normal,
+                                  c.normalStride, b, e);
+    });
+    forBlocks(0, table.stencils.numStencils(), kGrain / 2, [&](int b, int e) {
+        kernels::evalLimitStencils(c.src, c.srcStride, 3, c.stencils, c.stencilOutputs, b, e);
     });
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <quadtri/export.h>
+#include <quadtri/far/level_patch_table.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
@@ -40,6 +41,11 @@ public:
                                   float* dstDv, const BufferDescriptor& dvDesc, float* dstNormal,
                                   const BufferDescriptor& normalDesc, const LimitStencilTable& table,
                                   const MeshNormalTable* fallback = nullptr, int start = 0, int end = -1);
+
+    // Same contract as CpuEvaluator::EvalLevelPatches, bit-identical results.
+    static void EvalLevelPatches(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                 const BufferDescriptor& positionDesc, float* dstNormal,
+                                 const BufferDescriptor& normalDesc, const LevelPatchTable& table);
 };
 
 }  // namespace v0

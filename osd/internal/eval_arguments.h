@@ -4,10 +4,12 @@
 #pragma once
 
 #include <quadtri/export.h>
+#include <quadtri/far/level_patch_table.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/far/stencil_table.h>
 #include "kernels/limit_kernel.h"
+#include "kernels/patch_kernel.h"
 #include "kernels/mesh_normal_kernel.h"
 #include "kernels/stencil_kernel.h"
 #include <quadtri/osd/buffer_descriptor.h>
@@ -83,6 +85,24 @@ inline kernels::MeshNormalArrays meshNormalArrays(const MeshNormalTable& table) 
     return kernels::MeshNormalArrays{table.faceOffsets.data(), table.faceCorners.data(),
                                      table.vertexFaceOffsets.data(), table.vertexFaces.data()};
 }
+
+// EvalLevelPatches: valid descriptors of length 3 for the source and each output given, at least
+// one output; the patches' arrays and the stencils' as the kernels read them, with the outputs
+// offset. Throws std::invalid_argument.
+struct HostLevelPatchCall {
+    const float* src;
+    int srcStride;
+    kernels::LevelPatchArrays patches;
+    float* position;
+    int positionStride;
+    float* normal;
+    int normalStride;
+    kernels::LimitStencilArrays stencils;
+    kernels::LimitOutputs stencilOutputs;  // from element numPatchOutputs on
+};
+QUADTRI_API HostLevelPatchCall levelPatchCall(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                              const BufferDescriptor& positionDesc, float* dstNormal,
+                                              const BufferDescriptor& normalDesc, const LevelPatchTable& table);
 
 }  // namespace detail
 }  // namespace v0
