@@ -62,7 +62,12 @@ private:
 };
 
 const char* routeName(realtime::TableRoute route) {
-    return route == realtime::TableRoute::FactorizedLimit ? "factorized_limit" : "levels_then_limit";
+    switch (route) {
+        case realtime::TableRoute::FactorizedLimit: return "factorized_limit";
+        case realtime::TableRoute::LevelsThenLimit: return "levels_then_limit";
+        case realtime::TableRoute::Patches: return "patches";
+    }
+    return "?";
 }
 
 double boxDiagonal(const std::vector<float>& xyz) {
@@ -103,7 +108,8 @@ FrameCase::FrameCase(std::string name, const TopologyDescriptor& descriptor, con
     } catch (const MemoryBudgetError&) {  // the chain alone, as fastestSurfaceTables falls back to
     }
     chain_ = std::make_unique<realtime::SurfaceTables>(*refiner_, level, realtime::TableRoute::LevelsThenLimit);
-    for (const realtime::SurfaceTables* tables : {factorized_.get(), chain_.get()}) {
+    if (level > 0) patches_ = std::make_unique<realtime::SurfaceTables>(*refiner_, level, realtime::TableRoute::Patches);
+    for (const realtime::SurfaceTables* tables : {factorized_.get(), chain_.get(), patches_.get()}) {
         if (!tables) continue;
         for (bool threaded : {false, true})
             ways_.push_back({routeName(tables->route), std::make_unique<realtime::HostFrameEvaluator>(*tables, threaded)});

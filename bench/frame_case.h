@@ -1,8 +1,9 @@
 // One frame case on quadtri's side: the real-time loop's whole frame (tools/realtime/,
 // docs/realtime_loop.md). Every frame realtime::DeformingSurface poses the cage with the two-bone
-// skin, then level N's limit positions and unit normals are evaluated through both table routes
-// (the factorized limit table, and the per-level tables followed by the limit table over level N)
-// on CpuEvaluator, TbbEvaluator (all threads) and, given a device, Vulkan (the route
+// skin, then level N's limit positions and unit normals are evaluated through the table routes
+// (the factorized limit table; the per-level tables followed by the limit table over level N;
+// the per-level tables to level N - 3 followed by the regular patches, docs/patches.md) on
+// CpuEvaluator, TbbEvaluator (all threads) and, given a device, Vulkan (the route
 // fastestSurfaceTables takes); and, as a second figure, the per-level tables to level N followed
 // by level N's mesh normals.
 #pragma once
@@ -72,7 +73,7 @@ private:
     int level_;
     double diagonal_;
     std::unique_ptr<Refiner> refiner_;
-    std::unique_ptr<realtime::SurfaceTables> factorized_, chain_;
+    std::unique_ptr<realtime::SurfaceTables> factorized_, chain_, patches_;
     realtime::DeformingSurface surface_;
     std::vector<Way> ways_;  // the limit ways first, then the mesh-normal ways
     std::vector<float> positions_, normals_;

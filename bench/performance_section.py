@@ -295,7 +295,7 @@ def limit_summary(r):
 
 
 MESH_NORMALS = "levels_then_mesh_normals"
-ROUTES = {"factorized_limit": "factorized limit", "levels_then_limit": "per-level + limit",
+ROUTES = {"factorized_limit": "factorized limit", "levels_then_limit": "per-level + limit", "patches": "patches",
           "levels_then_mesh_normals": "per-level + mesh normals", "limit_stencils": "LimitStencilTable"}
 OSD_EVALUATORS = {"cpu": "CpuEvaluator", "omp": "OmpEvaluator", "far": "Far UpdateValues + UpdateDerivs"}
 

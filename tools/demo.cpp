@@ -91,10 +91,19 @@ int runDemo(const DemoArgs& args) {
     const realtime::SurfaceTables tables = args.route ? realtime::SurfaceTables(refiner, args.level, *args.route)
                                                       : realtime::fastestSurfaceTables(refiner, args.level);
     const LevelFaces faces = refiner.faces(args.level);
-    std::printf("level %d: %d vertices, %d faces; limit positions and normals through the %s tables (limit table %.1f MiB, "
-                "%zu entries), analysed in %.0f ms\n",
-                args.level, faces.numVertices(), faces.numFaces() - faces.numHoles(), realtime::toString(tables.route),
-                double(tables.limit.bytes()) / (1 << 20), tables.limit.numEntries(), msSince(start));
+    if (tables.patches)
+        std::printf("level %d: %d vertices, %d faces; limit positions and normals through the %s tables (%d patches of "
+                    "level %d give %d points, %d stencils the rest; %.1f MiB), analysed in %.0f ms\n",
+                    args.level, faces.numVertices(), faces.numFaces() - faces.numHoles(),
+                    realtime::toString(tables.route), tables.patches->numPatches(), tables.patches->patchLevel,
+                    tables.patches->numPatchOutputs(), tables.patches->stencils.numStencils(),
+                    double(tables.patches->bytes()) / (1 << 20), msSince(start));
+    else
+        std::printf("level %d: %d vertices, %d faces; limit positions and normals through the %s tables (limit table "
+                    "%.1f MiB, %zu entries), analysed in %.0f ms\n",
+                    args.level, faces.numVertices(), faces.numFaces() - faces.numHoles(),
+                    realtime::toString(tables.route), double(tables.limit.bytes()) / (1 << 20),
+                    tables.limit.numEntries(), msSince(start));
 
     realtime::DeformingSurface surface{realtime::TwoBoneSkin(mesh.positions)};
     const realtime::TwoBoneSkin& skin = surface.skin();

@@ -331,11 +331,13 @@ int main(int argc, char** argv) {
         ->delimiter(',')
         ->check(oneOf(evaluators, "evaluator"));
     static const std::map<std::string, realtime::TableRoute> routes{
-        {"factorized", realtime::TableRoute::FactorizedLimit}, {"levels", realtime::TableRoute::LevelsThenLimit}};
+        {"factorized", realtime::TableRoute::FactorizedLimit}, {"levels", realtime::TableRoute::LevelsThenLimit},
+        {"patches", realtime::TableRoute::Patches}};
     demoCmd->add_option_function<std::string>(
             "--tables", [&demo](const std::string& s) { demo.route = routes.at(s); },
             "factorized: one limit pass from the cage (default); levels: the per-level tables, then the limit "
-            "table over the last level")
+            "table over the last level; patches: the per-level tables to level - 3, then the regular patches "
+            "(docs/patches.md; host evaluators)")
         ->check(oneOf(routes, "table route"));
 
     cli::RenderArgs render;

@@ -100,6 +100,11 @@ expect_contains("${OUT}" "cpu against tbb, same frame: positions within 0, norma
 if(NOT OUT MATCHES "\n\\| tbb \\| 3 \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\|\n\\| cpu \\| 3 \\|")
   message(FATAL_ERROR "${CMD}: no tbb then cpu rows of 3 frames in:\n${OUT}")
 endif()
+# The patch route: host evaluators agree bit for bit; Vulkan has no patch evaluator yet and says so.
+run(0 demo "${CYLINDER}" --level 3 --frames 3 --evaluators cpu,tbb,vulkan --tables patches)
+expect_contains("${OUT}" "through the per-level then patches tables")
+expect_contains("${OUT}" "tbb against cpu, same frame: positions within 0, normals within 0")
+expect_contains("${ERR}" "the patch route has no Vulkan evaluator yet; vulkan skipped")
 
 # --- UVs: the file's vt refined with the mesh as face-varying channel 0 --------------------------
 # catmark_cube's 14 vt are the usual cross unwrap: 7 of its 12 edges have faces disagreeing on a
@@ -248,7 +253,7 @@ expect_contains("${ERR}" "no_such_dir/x.obj: cannot write file (No such file or 
 run(2 demo "${CYLINDER}" --evaluators cpu,gpu)
 expect_contains("${ERR}" "unknown evaluator 'gpu' (expected cpu, tbb, vulkan)")
 run(2 demo "${CYLINDER}" --tables adaptive)
-expect_contains("${ERR}" "unknown table route 'adaptive' (expected factorized, levels)")
+expect_contains("${ERR}" "unknown table route 'adaptive' (expected factorized, levels, patches)")
 run(2 demo "${CYLINDER}" --frames 0)
 run(2 demo "${CYLINDER}" --level 0)
 run(2 info "${WORK}")

@@ -39,6 +39,14 @@ void HostFrameEvaluator::evaluate(PhaseTimes& times) {
         stencils(source, xyz, levels_[L].data(), xyz, runs_[L], 0, -1);
         source = levels_[L].data();
     }
+    if (tables_.patches) {
+        auto patches = threaded_ ? TbbEvaluator::EvalLevelPatches : CpuEvaluator::EvalLevelPatches;
+        times.evaluateMs = msSince(start);
+        start = Clock::now();
+        patches(source, xyz, positions_.data(), xyz, normals_.data(), xyz, *tables_.patches);
+        times.normalsMs = msSince(start);
+        return;
+    }
     const bool onePass = tables_.route == TableRoute::FactorizedLimit;
     if (!onePass) {
         times.evaluateMs = msSince(start);
@@ -53,6 +61,15 @@ void HostFrameEvaluator::evaluate(PhaseTimes& times) {
 void HostFrameEvaluator::readBack(std::vector<float>& positions, std::vector<float>& normals) {
     positions = positions_;
     normals = normals_;
+    if (!tables_.patches) return;
+    // The patch table's points, back in level order.
+    for (int k = 0; k < tables_.numPoints; ++k) {
+        const std::size_t v = std::size_t(tables_.patches->vertexOf(k));
+        for (int c = 0; c < 3; ++c) {
+            positions[3 * v + std::size_t(c)] = positions_[3 * std::size_t(k) + std::size_t(c)];
+            normals[3 * v + std::size_t(c)] = normals_[3 * std::size_t(k) + std::size_t(c)];
+        }
+    }
 }
 
 }  // namespace quadtri::realtime

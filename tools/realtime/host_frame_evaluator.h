@@ -20,7 +20,8 @@ public:
     void evaluate(PhaseTimes& times) override;
     void readBack(std::vector<float>& positions, std::vector<float>& normals) override;
 
-    // The outputs in place, 3 floats per level-N vertex.
+    // The outputs in place, 3 floats per level-N vertex (per point of the patch table, in its
+    // order, under TableRoute::Patches; readBack gives level order).
     const std::vector<float>& positions() const { return positions_; }
     const std::vector<float>& normals() const { return normals_; }
 
@@ -29,7 +30,7 @@ private:
     bool threaded_;
     const float* cage_ = nullptr;
     std::vector<StencilRuns> runs_;           // of tables_.levels, what the frame loop evaluates
-    std::vector<std::vector<float>> levels_;  // LevelsThenLimit: levels 1..N
+    std::vector<std::vector<float>> levels_;  // LevelsThenLimit: levels 1..N; Patches: 1..K
     std::vector<float> positions_, normals_;
 };
 

@@ -6,7 +6,12 @@
 namespace quadtri::realtime {
 
 const char* toString(TableRoute route) {
-    return route == TableRoute::FactorizedLimit ? "factorized limit" : "per-level then limit";
+    switch (route) {
+        case TableRoute::FactorizedLimit: return "factorized limit";
+        case TableRoute::LevelsThenLimit: return "per-level then limit";
+        case TableRoute::Patches: return "per-level then patches";
+    }
+    return "?";
 }
 
 SurfaceTables::SurfaceTables(const Refiner& refiner, int level, TableRoute route)
@@ -17,6 +22,13 @@ SurfaceTables::SurfaceTables(const Refiner& refiner, int level, TableRoute route
     numPoints = refiner.faces(level).numVertices();
     if (route == TableRoute::FactorizedLimit) {
         limit = refiner.factorizedLimitStencils(level);
+        return;
+    }
+    if (route == TableRoute::Patches) {
+        if (level == 0) throw std::invalid_argument("SurfaceTables: the patch route needs level 1 or more");
+        const int patchLevel = patchLevelFor(level);
+        for (int L = 1; L <= patchLevel; ++L) levels.push_back(refiner.levelStencils(L));
+        patches = refiner.levelPatches(level, patchLevel);
         return;
     }
     for (int L = 1; L <= level; ++L) levels.push_back(refiner.levelStencils(L));

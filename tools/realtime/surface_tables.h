@@ -2,6 +2,8 @@
 // limit normals, through one of two routes (docs/realtime_loop.md, "The tables").
 #pragma once
 
+#include <optional>
+
 #include <vector>
 
 #include <quadtri/far/limit_stencil_table.h>
@@ -23,6 +25,11 @@ enum class TableRoute {
     // vertices (Refiner::limitStencils(N)). Its tables grow linearly with the level where a
     // factorized table can pass the memory budget (near high-valence vertices, at levels 5-6).
     LevelsThenLimit,
+    // Level by level to the patch level K = max(0, N - 3), then level N from K's regular patches
+    // (Refiner::levelPatches, docs/patches.md): no index per point where a face is a regular
+    // patch, stencils over level K elsewhere. Its points come in the patch table's order; host
+    // evaluators only for now.
+    Patches,
 };
 const char* toString(TableRoute route);
 
@@ -41,7 +48,12 @@ struct SurfaceTables {
     // LevelsThenLimit: level N's mesh normals, the normal where the tangents are degenerate (a
     // factorized table never sees level N, so it has none: docs/limit_evaluation.md).
     MeshNormalTable fallback;
+    // Patches: levels holds levels 1..K, and `patches` gives level N from level K.
+    std::optional<LevelPatchTable> patches;
 };
+
+// The patch level the Patches route takes for level N: rate-8 grids, the rows of one 8-wide vector.
+inline int patchLevelFor(int level) { return level > 3 ? level - 3 : 0; }
 
 // The fastest route's tables: FactorizedLimit, or LevelsThenLimit where the memory budget
 // refuses the factorized table (near high-valence vertices at high levels).

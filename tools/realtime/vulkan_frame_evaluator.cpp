@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <stdexcept>
 
 namespace quadtri::realtime {
 
@@ -39,7 +40,10 @@ VulkanFrameEvaluator::VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTabl
                     : nullptr),
       source_(VulkanVertexBuffer::create(ctx, levelFirst_.back(), 3)),
       positions_(VulkanVertexBuffer::create(ctx, tables.numPoints, 3)),
-      normals_(VulkanVertexBuffer::create(ctx, tables.numPoints, 3)), stencilEvaluator_(ctx), limitEvaluator_(ctx) {}
+      normals_(VulkanVertexBuffer::create(ctx, tables.numPoints, 3)), stencilEvaluator_(ctx), limitEvaluator_(ctx) {
+    if (tables.route == TableRoute::Patches)
+        throw std::invalid_argument("VulkanFrameEvaluator: the patch route has no Vulkan evaluator yet");
+}
 
 void VulkanFrameEvaluator::setCage(const float* cage) { source_.updateData(cage, 0, numControl_); }
 
