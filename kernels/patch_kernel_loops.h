@@ -13,6 +13,82 @@ inline namespace v0 {
 namespace kernels {
 namespace {
 
+#if defined(__SSE2__)
+// The unit normal of tangents u, v at d, (0, 0, 0) where they are parallel: lane by lane the
+// scalar unitNormals' arithmetic.
+inline void storeNormal(float* d, __m128 u, __m128 v) {
+    const __m128 n = yzx(_mm_sub_ps(_mm_mul_ps(u, yzx(v)), _mm_mul_ps(yzx(u), v)));
+    const float n2 = _mm_cvtss_f32(dot3(n)), u2 = _mm_cvtss_f32(dot3(u)), v2 = _mm_cvtss_f32(dot3(v));
+    const float scale = n2 > kDegenerateSine * kDegenerateSine * u2 * v2 ? 1.0f / std::sqrt(n2) : 0.0f;
+    store3(d, _mm_mul_ps(n, _mm_set1_ps(scale)));
+}
+
+// A B-spline patch as a tensor product: the rows' curves Q_r(i) = sum_c B_c(i) P_rc and their
+// derivatives at every grid line i first, then each output from four of them, x y z in one
+// register.
+void bSplinePatch(const float* src, int srcStride, const LevelPatchArrays& a, int patch, float* position,
+                  int positionStride, float* normal, int normalStride) {
+    const int n = a.rate;
+    const int* ids = a.patchPoints + a.pointOffsets[patch];
+    const __m128 p0 = load3(src + static_cast<long>(ids[0]) * srcStride);
+    __m128 q[4][kMaxRate + 1], dq[4][kMaxRate + 1];
+    for (int r = 0; r < 4; ++r) {
+        __m128 row[4];
+        for (int k = 0; k < 4; ++k) row[k] = _mm_sub_ps(load3(src + static_cast<long>(ids[4 * r + k]) * srcStride), p0);
+        for (int i = 0; i <= n; ++i) {
+            const float* w = a.curveWeights + 8 * i;
+            q[r][i] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(w[0]), row[0]), _mm_mul_ps(_mm_set1_ps(w[1]), row[1])),
+                                 _mm_add_ps(_mm_mul_ps(_mm_set1_ps(w[2]), row[2]), _mm_mul_ps(_mm_set1_ps(w[3]), row[3])));
+            dq[r][i] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(w[4]), row[0]), _mm_mul_ps(_mm_set1_ps(w[5]), row[1])),
+                                  _mm_add_ps(_mm_mul_ps(_mm_set1_ps(w[6]), row[2]), _mm_mul_ps(_mm_set1_ps(w[7]), row[3])));
+        }
+    }
+    const int first = a.outputOffsets[patch], last = a.outputOffsets[patch + 1];
+    int j = -1;
+    __m128 w[8] = {};
+    for (int o = first; o < last; ++o) {
+        const int cell = a.outputCells[o], i = cell & 0xff;
+        if ((cell >> 8) != j) {  // outputs come row by row: a row's weights once
+            j = cell >> 8;
+            for (int k = 0; k < 8; ++k) w[k] = _mm_set1_ps(a.curveWeights[8 * j + k]);
+        }
+        if (position) {
+            const __m128 p = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w[0], q[0][i]), _mm_mul_ps(w[1], q[1][i])),
+                                        _mm_add_ps(_mm_mul_ps(w[2], q[2][i]), _mm_mul_ps(w[3], q[3][i])));
+            store3(position + static_cast<long>(o) * positionStride, _mm_add_ps(p0, p));
+        }
+        if (normal) {
+            const __m128 u = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w[0], dq[0][i]), _mm_mul_ps(w[1], dq[1][i])),
+                                        _mm_add_ps(_mm_mul_ps(w[2], dq[2][i]), _mm_mul_ps(w[3], dq[3][i])));
+            const __m128 v = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w[4], q[0][i]), _mm_mul_ps(w[5], q[1][i])),
+                                        _mm_add_ps(_mm_mul_ps(w[6], q[2][i]), _mm_mul_ps(w[7], q[3][i])));
+            storeNormal(normal + static_cast<long>(o) * normalStride, u, v);
+        }
+    }
+}
+
+// A box-spline patch: each output from its cell's 12 weights (three per point), x y z in one
+// register.
+void boxSplinePatch(const float* src, int srcStride, const LevelPatchArrays& a, int patch, float* position,
+                    int positionStride, float* normal, int normalStride) {
+    const int* ids = a.patchPoints + a.pointOffsets[patch];
+    __m128 points[12], offsets[12];
+    for (int k = 0; k < 12; ++k) points[k] = load3(src + static_cast<long>(ids[k]) * srcStride);
+    for (int k = 0; k < 12; ++k) offsets[k] = _mm_sub_ps(points[k], points[0]);
+    for (int o = a.outputOffsets[patch]; o < a.outputOffsets[patch + 1]; ++o) {
+        const int cell = a.outputCells[o];
+        const float* w = a.boxSplineWeights + static_cast<long>((cell >> 8) * (a.rate + 1) + (cell & 0xff)) * 36;
+        __m128 p = _mm_setzero_ps(), u = _mm_setzero_ps(), v = _mm_setzero_ps();
+        for (int k = 0; k < 12; ++k, w += 3) {
+            p = _mm_add_ps(p, _mm_mul_ps(_mm_set1_ps(w[0]), points[k]));
+            u = _mm_add_ps(u, _mm_mul_ps(_mm_set1_ps(w[1]), offsets[k]));
+            v = _mm_add_ps(v, _mm_mul_ps(_mm_set1_ps(w[2]), offsets[k]));
+        }
+        if (position) store3(position + static_cast<long>(o) * positionStride, p);
+        if (normal) storeNormal(normal + static_cast<long>(o) * normalStride, u, v);
+    }
+}
+#else
 // The unit normals of `count` tangent pairs (u, v), (0, 0, 0) where they are parallel, written
 // over v: a loop over arrays, which the compiler vectorizes.
 void unitNormals(const float* ux, const float* uy, const float* uz, float* vx, float* vy, float* vz, int count) {
@@ -127,6 +203,8 @@ void boxSplinePatch(const float* src, int srcStride, const LevelPatchArrays& a, 
 }
 
 
+
+#endif
 
 // Patches [start, end).
 inline void levelPatchLoop(const float* src, int srcStride, const LevelPatchArrays& a, float* position,
