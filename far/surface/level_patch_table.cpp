@@ -8,15 +8,12 @@
 #include <utility>
 
 #include <quadtri/far/refiner.h>
-#include "far/schemes/scheme.h"
-#include "far/limit/limit_table.h"
 #include "far/surface/level_patch_builder.h"
 #include "far/surface/patch_basis.h"
 #include "far/surface/regular_patch.h"
 
 namespace quadtri {
 inline namespace v0 {
-
 namespace internal {
 
 namespace {
