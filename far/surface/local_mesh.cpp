@@ -5,10 +5,13 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "far/schemes/scheme.h"
 #include "far/tables/level_stencils.h"
+#include "far/schemes/crease.h"
 #include "far/topology/refine_topology.h"
+#include "far/topology/topology_builder.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -39,11 +42,52 @@ void applySharpen(Topology& t, Sharpen sharpen) {
     if (sharpen == Sharpen::All) std::fill(t.edgeSharpness.begin(), t.edgeSharpness.end(), kInfiniteSharpness);
 }
 
-LocalMesh meshOfCut(const PatchCut& cut, int face, const Options& options, Sharpen sharpen) {
+// The cut as a topology of its own with the level's own edges (a face list would join the two
+// children of a collapsed edge, which link the same two vertices), sharpness as cutPatch reads it
+// (boundary edges without theirs, so that the rim's boundaries never come back as creases inside
+// a later cut), then the boundary rules of a base mesh.
+Topology cutKeepingEdges(const Topology& t, const PatchCut& cut, const Options& options) {
+    Topology m;
+    m.numVertices = int(cut.source.size());
+    m.faceVerts = cut.corners;
+    std::vector<std::pair<int, int>> localEdge;  // (level edge, cut edge), sorted as they come
+    std::vector<float> edgeSharpness;
+    auto edgeOf = [&](int e, int from, int to) {
+        const auto at = std::lower_bound(localEdge.begin(), localEdge.end(), std::pair<int, int>{e, -1});
+        if (at != localEdge.end() && at->first == e) return at->second;
+        const int id = m.numEdges();
+        localEdge.insert(at, {e, id});
+        m.edgeVerts.insert(m.edgeVerts.end(), {from, to});
+        const bool crease = isSharp(t.edgeSharpness[std::size_t(e)]) && !(t.edgeFlags[std::size_t(e)] & kEdgeBoundary);
+        edgeSharpness.push_back(crease ? t.edgeSharpness[std::size_t(e)] : 0.0f);
+        return id;
+    };
+    int corner = 0;
+    for (std::size_t i = 0; i < cut.faceSource.size(); ++i) {
+        const int f = cut.faceSource[i], n = t.faceSize(f), first = corner;
+        m.faceOffsets.push_back(first + n);
+        const IndexSpan verts = t.verticesOfFace(f), edges = t.edgesOfFace(f);
+        for (int k = 0; k < n; ++k, ++corner) {
+            const int e = edges[k], here = cut.corners[std::size_t(first + k)],
+                      next = cut.corners[std::size_t(first + (k + 1) % n)];
+            const bool forward = t.edgeVerts[2 * std::size_t(e)] == verts[k];
+            m.faceEdges.push_back(edgeOf(e, forward ? here : next, forward ? next : here));
+        }
+    }
+    completeTopologyFromEdges(m);
+    m.edgeSharpness = edgeSharpness;
+    for (int v = 0; v < m.numVertices; ++v) {
+        const float s = t.vertSharpness[std::size_t(cut.source[std::size_t(v)])];
+        m.vertSharpness[std::size_t(v)] = isSharp(s) ? s : 0.0f;
+    }
+    for (std::size_t i = 0; i < cut.faceSource.size(); ++i) m.faceHole[i] = t.faceHole[std::size_t(cut.faceSource[i])];
+    applyBoundaryRules(m, options);
+    return m;
+}
+
+LocalMesh meshOfCut(const Topology& level, const PatchCut& cut, int face, const Options& options, Sharpen sharpen) {
     LocalMesh m;
-    m.topology = cutTopology(cut, cutOptions(options));
-    if (m.topology.numFaces() != int(cut.faceSource.size()))
-        throw std::logic_error("local mesh: the cut lost a face when rebuilt");
+    m.topology = cutKeepingEdges(level, cut, cutOptions(options));
     applySharpen(m.topology, sharpen);
     m.face = positionOf(cut.faceSource, face);
     return m;
@@ -55,7 +99,7 @@ LocalMesh cutBase(const Topology& base, int face, int rings, const Options& opti
                   std::vector<int>& columns, Sharpen sharpen) {
     PatchCut cut;
     cutPatch(base, base.verticesOfFace(face), rings, scratch, cut);
-    LocalMesh m = meshOfCut(cut, face, options, sharpen);
+    LocalMesh m = meshOfCut(base, cut, face, options, sharpen);
     const int n = int(cut.source.size());
     columns = cut.source;
     m.numColumns = n;
@@ -74,7 +118,7 @@ LocalMesh refineTowards(const LocalMesh& mesh, int child, int rings, const Optio
 
     PatchCut cut;
     cutPatch(c, c.verticesOfFace(childFace), rings, scratch, cut);
-    LocalMesh out = meshOfCut(cut, childFace, options, sharpen);
+    LocalMesh out = meshOfCut(c, cut, childFace, options, sharpen);
 
     std::vector<std::uint8_t> wanted(std::size_t(c.numVertices), 0);
     for (int v : cut.source) wanted[v] = 1;

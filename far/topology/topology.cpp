@@ -263,6 +263,44 @@ std::string describeLoops(const FaceLoops& loops) {
 
 }  // namespace
 
+void internal::applyBoundaryRules(Topology& t, const Options& options) {
+    // Boundary and non-manifold edges are infinitely sharp.
+    forEach(t.numEdges(), [&t](int e) {
+        if (t.edgeFlags[e] & (kEdgeBoundary | kEdgeNonManifold)) t.edgeSharpness[e] = kInfiniteSharpness;
+    });
+
+    forEach(t.numVertices, [&t, &options](int v) {
+        const uint8_t flags = t.vertFlags[v];
+        if ((flags & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner) {
+            t.vertSharpness[v] = kInfiniteSharpness;
+        } else if (flags & kVertexNonManifold) {
+            // A non-manifold crease (two opposing non-manifold edges carrying extra fins, no
+            // boundary) stays a crease; every other non-manifold vertex becomes a corner.
+            int nonManifoldEdges = 0;
+            for (int e : t.edgesOfVertex(v)) nonManifoldEdges += (t.edgeFlags[e] & kEdgeNonManifold) ? 1 : 0;
+            const bool nonManifoldCrease = nonManifoldEdges == 2 && !(flags & kVertexBoundary) &&
+                                           t.vertexFaceCount(v) > t.vertexEdgeCount(v);
+            if (!nonManifoldCrease) t.vertSharpness[v] = kInfiniteSharpness;
+        }
+        if (t.vertexFaceCount(v) == 0) t.vertSharpness[v] = kInfiniteSharpness;  // isolated: stays put
+    });
+    if (options.boundary == BoundaryInterpolation::None) {
+        for (int v = 0; v < t.numVertices; ++v) {
+            if (!(t.vertFlags[v] & kVertexBoundary) || t.vertSharpness[v] >= kInfiniteSharpness) continue;
+            for (int f : t.facesOfVertex(v)) t.faceHole[f] = 1;
+        }
+    }
+}
+
+void internal::completeTopologyFromEdges(Topology& t) {
+    buildIncidences(t);
+    flagEdges(t);
+    flagVertices(t);
+    t.edgeSharpness.assign(std::size_t(t.numEdges()), 0.0f);
+    t.vertSharpness.assign(std::size_t(t.numVertices), 0.0f);
+    t.faceHole.resize(std::size_t(t.numFaces()));
+}
+
 Topology internal::buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
                            std::vector<TopologyDiagnostic>* warnings) {
     validateDescriptor(desc);
@@ -333,32 +371,7 @@ Topology internal::buildBaseTopology(const TopologyDescriptor& desc, const Optio
         std::fill(t.faceHole.begin() + firstFace[size_t(f)], t.faceHole.begin() + firstFace[size_t(f) + 1], uint8_t(1));
     }
 
-    // Boundary and non-manifold edges are infinitely sharp.
-    forEach(t.numEdges(), [&t](int e) {
-        if (t.edgeFlags[e] & (kEdgeBoundary | kEdgeNonManifold)) t.edgeSharpness[e] = kInfiniteSharpness;
-    });
-
-    forEach(t.numVertices, [&t, &options](int v) {
-        const uint8_t flags = t.vertFlags[v];
-        if ((flags & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner) {
-            t.vertSharpness[v] = kInfiniteSharpness;
-        } else if (flags & kVertexNonManifold) {
-            // A non-manifold crease (two opposing non-manifold edges carrying extra fins, no
-            // boundary) stays a crease; every other non-manifold vertex becomes a corner.
-            int nonManifoldEdges = 0;
-            for (int e : t.edgesOfVertex(v)) nonManifoldEdges += (t.edgeFlags[e] & kEdgeNonManifold) ? 1 : 0;
-            const bool nonManifoldCrease = nonManifoldEdges == 2 && !(flags & kVertexBoundary) &&
-                                           t.vertexFaceCount(v) > t.vertexEdgeCount(v);
-            if (!nonManifoldCrease) t.vertSharpness[v] = kInfiniteSharpness;
-        }
-        if (t.vertexFaceCount(v) == 0) t.vertSharpness[v] = kInfiniteSharpness;  // isolated: stays put
-    });
-    if (options.boundary == BoundaryInterpolation::None) {
-        for (int v = 0; v < t.numVertices; ++v) {
-            if (!(t.vertFlags[v] & kVertexBoundary) || t.vertSharpness[v] >= kInfiniteSharpness) continue;
-            for (int f : t.facesOfVertex(v)) t.faceHole[f] = 1;
-        }
-    }
+    applyBoundaryRules(t, options);
     return t;
 }
 

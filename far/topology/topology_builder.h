@@ -29,6 +29,16 @@ void completeTopology(Topology& topology);
 // edgeVerts.
 void buildIncidences(Topology& topology);
 
+// completeTopology for a topology whose edges are given (faceEdges, edgeVerts): incidences and
+// flags; sharpness arrays sized and zeroed. For a piece cut from a refined level, whose edges a
+// face list cannot say (a collapsed edge's two children join the same two vertices).
+void completeTopologyFromEdges(Topology& topology);
+
+// What buildBaseTopology makes of boundaries once creases, corners and holes are set: boundary
+// and non-manifold edges infinitely sharp, corners under EdgeAndCorner, non-manifold and isolated
+// vertices, and the holes of BoundaryInterpolation::None.
+void applyBoundaryRules(Topology& topology, const Options& options);
+
 }  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -61,14 +61,6 @@ bool exactUniformLimit(const Topology& t, int vertex) {
     return sharp != 1;
 }
 
-bool repeatsACorner(const Topology& t, int f) {
-    const IndexSpan c = t.verticesOfFace(f);
-    for (int i = 0; i < c.size(); ++i)
-        for (int j = 0; j < i; ++j)
-            if (c[i] == c[j]) return true;
-    return false;
-}
-
 std::pair<double, double> randomPointOf(const FaceParameterization& p, int k, std::mt19937& random) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     double u = unit(random), v = unit(random);

@@ -22,10 +22,6 @@ void forEachDescendantCorner(const Refiner& r, int face, int L,
 // only in the limit of refinement.
 bool exactUniformLimit(const Topology& t, int vertex);
 
-// Catmull-clark keeps a face with a collapsed edge (`4 3 5 5`) as OpenSubdiv does; its (u, v)
-// are not yet checked here (docs/surface.md, "Limits").
-bool repeatsACorner(const Topology& t, int f);
-
 // A random (u, v) in the face's domain; for a face of quad sub-faces, in sub-face k % faceSize.
 std::pair<double, double> randomPointOf(const FaceParameterization& p, int k, std::mt19937& random);
 
