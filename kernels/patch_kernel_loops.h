@@ -1,5 +1,6 @@
 // The level-patch loops (kernels/patch_kernel.h), compiled twice: for the baseline CPU in
-// patch_kernel.cpp and with AVX2 + FMA in patch_kernel_avx2.cpp. Include only there.
+// patch_kernel.cpp and with AVX2 + FMA in patch_kernel_avx2.cpp. Include only there, and in
+// test_level_patches, which defines QUADTRI_PORTABLE_PATCH_LOOPS to check the portable loops.
 #pragma once
 
 #include <algorithm>
@@ -13,7 +14,7 @@ inline namespace v0 {
 namespace kernels {
 namespace {
 
-#if defined(__SSE2__)
+#if defined(__SSE2__) && !defined(QUADTRI_PORTABLE_PATCH_LOOPS)
 // The unit normal of tangents u, v at d, (0, 0, 0) where they are parallel: lane by lane the
 // scalar unitNormals' arithmetic.
 inline void storeNormal(float* d, __m128 u, __m128 v) {

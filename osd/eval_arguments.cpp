@@ -121,6 +121,8 @@ bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor
     return true;
 }
 
+static_assert(kernels::kMaxRate == LevelPatchTable::kMaxRate, "the kernel's grid-line bytes follow the table's");
+
 HostLevelPatchCall levelPatchCall(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
                                   const BufferDescriptor& positionDesc, float* dstNormal,
                                   const BufferDescriptor& normalDesc, const LevelPatchTable& t) {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <utility>
 
 #include "far/schemes/scheme.h"
 #include "far/tables/level_stencils.h"
@@ -46,17 +45,17 @@ void applySharpen(Topology& t, Sharpen sharpen) {
 // children of a collapsed edge, which link the same two vertices), sharpness as cutPatch reads it
 // (boundary edges without theirs, so that the rim's boundaries never come back as creases inside
 // a later cut), then the boundary rules of a base mesh.
-Topology cutKeepingEdges(const Topology& t, const PatchCut& cut, const Options& options) {
+Topology cutKeepingEdges(const Topology& t, const PatchCut& cut, const Options& options, WalkScratch& scratch) {
     Topology m;
     m.numVertices = int(cut.source.size());
     m.faceVerts = cut.corners;
-    std::vector<std::pair<int, int>> localEdge;  // (level edge, cut edge), sorted as they come
+    StampedMarks& localEdge = scratch.labels;  // level edge -> cut edge; cutPatch is done with it
+    localEdge.clear(t.numEdges());
     std::vector<float> edgeSharpness;
     auto edgeOf = [&](int e, int from, int to) {
-        const auto at = std::lower_bound(localEdge.begin(), localEdge.end(), std::pair<int, int>{e, -1});
-        if (at != localEdge.end() && at->first == e) return at->second;
+        if (localEdge.marked(e)) return localEdge.value(e);
         const int id = m.numEdges();
-        localEdge.insert(at, {e, id});
+        localEdge.mark(e, id);
         m.edgeVerts.insert(m.edgeVerts.end(), {from, to});
         const bool crease = isSharp(t.edgeSharpness[std::size_t(e)]) && !(t.edgeFlags[std::size_t(e)] & kEdgeBoundary);
         edgeSharpness.push_back(crease ? t.edgeSharpness[std::size_t(e)] : 0.0f);
@@ -85,9 +84,10 @@ Topology cutKeepingEdges(const Topology& t, const PatchCut& cut, const Options& 
     return m;
 }
 
-LocalMesh meshOfCut(const Topology& level, const PatchCut& cut, int face, const Options& options, Sharpen sharpen) {
+LocalMesh meshOfCut(const Topology& level, const PatchCut& cut, int face, const Options& options, Sharpen sharpen,
+                    WalkScratch& scratch) {
     LocalMesh m;
-    m.topology = cutKeepingEdges(level, cut, cutOptions(options));
+    m.topology = cutKeepingEdges(level, cut, cutOptions(options), scratch);
     applySharpen(m.topology, sharpen);
     m.face = positionOf(cut.faceSource, face);
     return m;
@@ -99,7 +99,7 @@ LocalMesh cutBase(const Topology& base, int face, int rings, const Options& opti
                   std::vector<int>& columns, Sharpen sharpen) {
     PatchCut cut;
     cutPatch(base, base.verticesOfFace(face), rings, scratch, cut);
-    LocalMesh m = meshOfCut(base, cut, face, options, sharpen);
+    LocalMesh m = meshOfCut(base, cut, face, options, sharpen, scratch);
     const int n = int(cut.source.size());
     columns = cut.source;
     m.numColumns = n;
@@ -118,7 +118,7 @@ LocalMesh refineTowards(const LocalMesh& mesh, int child, int rings, const Optio
 
     PatchCut cut;
     cutPatch(c, c.verticesOfFace(childFace), rings, scratch, cut);
-    LocalMesh out = meshOfCut(c, cut, childFace, options, sharpen);
+    LocalMesh out = meshOfCut(c, cut, childFace, options, sharpen, scratch);
 
     std::vector<std::uint8_t> wanted(std::size_t(c.numVertices), 0);
     for (int v : cut.source) wanted[v] = 1;

@@ -235,12 +235,7 @@ void internal::buildIncidences(Topology& t) {
 
 void internal::completeTopology(Topology& t) {
     buildEdges(t);
-    buildIncidences(t);
-    flagEdges(t);
-    flagVertices(t);
-    t.edgeSharpness.assign(std::size_t(t.numEdges()), 0.0f);
-    t.vertSharpness.assign(std::size_t(t.numVertices), 0.0f);
-    t.faceHole.resize(std::size_t(t.numFaces()));
+    completeTopologyFromEdges(t);
 }
 
 int findEdge(const Topology& t, int a, int b) {

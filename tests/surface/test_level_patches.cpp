@@ -1,13 +1,15 @@
 // LevelPatchTable (far/level_patch_table.h, Refiner::levelPatches): level L's limit from level K's
 // regular patches equals the factorized limit route within float rounding on every scheme, every
-// level-L vertex is one point of the table, the serial and threaded evaluators agree bit for bit, and the
-// errors.
+// level-L vertex is one point of the table, the serial and threaded evaluators agree bit for bit,
+// the portable loops (CPUs without SSE2) agree with them, and the errors.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include <quadtri/far/level_patch_table.h>
+#define QUADTRI_PORTABLE_PATCH_LOOPS  // the loops CPUs without SSE2 run, checked here too
+#include "kernels/patch_kernel_loops.h"
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/tbb_evaluator.h>
 #include "tests/limit/limit_support.h"
@@ -82,6 +84,26 @@ TEST_P(LevelPatches, EqualTheFactorizedLimitAndWriteEveryVertexOnce) {
                 table.numPatches(), worstPosition, worstNormal);
     EXPECT_LT(worstPosition, 1e-6);
     EXPECT_LT(worstNormal, 1e-4);
+
+    // The portable loops (what a CPU without SSE2 runs) on the same patches.
+    const kernels::LevelPatchArrays arrays{table.rate(),
+                                           reinterpret_cast<const std::uint8_t*>(table.patchBasis.data()),
+                                           table.pointOffsets.data(),
+                                           table.patchPoints.data(),
+                                           table.outputOffsets.data(),
+                                           table.outputCells.data(),
+                                           table.curveWeights.data(),
+                                           table.boxSplineWeights.data()};
+    std::vector<float> portablePosition(position.size()), portableNormal(normal.size());
+    kernels::levelPatchLoop(r.positions[std::size_t(c.patchLevel)].data(), 3, arrays, portablePosition.data(), 3,
+                            portableNormal.data(), 3, 0, table.numPatches());
+    float worstPortable = 0, worstPortableNormal = 0;
+    for (std::size_t k = 0; k < 3 * std::size_t(table.numPatchOutputs()); ++k) {
+        worstPortable = std::max(worstPortable, std::fabs(portablePosition[k] - position[k]));
+        worstPortableNormal = std::max(worstPortableNormal, std::fabs(portableNormal[k] - normal[k]));
+    }
+    EXPECT_LT(worstPortable, 1e-6 * diagonal);
+    EXPECT_LT(worstPortableNormal, 1e-5f);
 
     std::vector<float> tbbPosition(position.size()), tbbNormal(normal.size());
     TbbEvaluator::EvalLevelPatches(r.positions[std::size_t(c.patchLevel)].data(), xyz, tbbPosition.data(), xyz,

@@ -10,7 +10,8 @@ namespace quadtri::realtime {
 // Milliseconds per phase of one frame. With TableRoute::FactorizedLimit the positions and the
 // normals come out of one pass, all counted as `evaluate`, and `normals` is 0; with
 // LevelsThenLimit `evaluate` is the per-level tables and `normals` the limit pass over level N
-// (which also moves the points onto the limit surface).
+// (which also moves the points onto the limit surface); with Patches `evaluate` is the per-level
+// tables to the patch level and `normals` the patch pass (positions and normals).
 struct PhaseTimes {
     double deformMs = 0;    // skinning the cage, and putting it where the evaluator reads it
     double evaluateMs = 0;
