@@ -122,18 +122,43 @@ double maxNormalAngle(const std::vector<float>& aPositions, const std::vector<fl
     std::vector<int> partner;
     if (!matchPositions(aPositions, bPositions, tolerance, &partner).ok) return std::numeric_limits<double>::infinity();
     double worst = 0;
-    for (std::size_t i = 0; i < partner.size(); ++i) {
-        const float* n = &aNormals[3 * i];
-        const float* m = &bNormals[3 * std::size_t(partner[i])];
-        double dot = 0, cross2 = 0;
-        for (int c = 0; c < 3; ++c) dot += double(n[c]) * m[c];
-        for (int c = 0; c < 3; ++c) {
-            const double x = double(n[(c + 1) % 3]) * m[(c + 2) % 3] - double(n[(c + 2) % 3]) * m[(c + 1) % 3];
-            cross2 += x * x;
-        }
-        worst = std::max(worst, std::atan2(std::sqrt(cross2), dot));
-    }
+    for (std::size_t i = 0; i < partner.size(); ++i)
+        worst = std::max(worst, angleBetween(&aNormals[3 * i], &bNormals[3 * std::size_t(partner[i])]));
     return worst;
+}
+
+void unitNormal(const float* du, const float* dv, float* n) {
+    const float x = du[1] * dv[2] - du[2] * dv[1], y = du[2] * dv[0] - du[0] * dv[2], z = du[0] * dv[1] - du[1] * dv[0];
+    const float length = std::sqrt(x * x + y * y + z * z);
+    const float scale = length > 0 ? 1 / length : 0;
+    n[0] = x * scale;
+    n[1] = y * scale;
+    n[2] = z * scale;
+}
+
+double angleBetween(const float* n, const float* m) {
+    double dot = 0, cross2 = 0;
+    for (int c = 0; c < 3; ++c) dot += double(n[c]) * m[c];
+    for (int c = 0; c < 3; ++c) {
+        const double x = double(n[(c + 1) % 3]) * m[(c + 2) % 3] - double(n[(c + 2) % 3]) * m[(c + 1) % 3];
+        cross2 += x * x;
+    }
+    return std::atan2(std::sqrt(cross2), dot);
+}
+
+InOrderDifference compareInOrder(const std::vector<float>& positions, const std::vector<float>& normals,
+                                 const std::vector<float>& referencePositions,
+                                 const std::vector<float>& referenceNormals) {
+    if (positions.size() != referencePositions.size() || normals.size() != referenceNormals.size())
+        return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    InOrderDifference d;
+    for (std::size_t i = 0; i + 2 < positions.size(); i += 3) {
+        double squared = 0;
+        for (int c = 0; c < 3; ++c) squared += std::pow(double(positions[i + c]) - referencePositions[i + c], 2);
+        d.position = std::max(d.position, std::sqrt(squared));
+        d.normalAngle = std::max(d.normalAngle, angleBetween(&normals[i], &referenceNormals[i]));
+    }
+    return d;
 }
 
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {

@@ -26,6 +26,22 @@ MatchResult matchPositions(const std::vector<float>& a, const std::vector<float>
 double maxNormalAngle(const std::vector<float>& aPositions, const std::vector<float>& aNormals,
                       const std::vector<float>& bPositions, const std::vector<float>& bNormals, double tolerance);
 
+// normalize(du x dv) into n (zero where the cross product is).
+void unitNormal(const float* du, const float* dv, float* n);
+
+// The angle in radians between two directions (3 floats each).
+double angleBetween(const float* n, const float* m);
+
+// Same order on both sides (3 floats a point): the farthest pair of positions and the largest
+// angle between the normals.
+struct InOrderDifference {
+    double position = 0;
+    double normalAngle = 0;
+};
+InOrderDifference compareInOrder(const std::vector<float>& positions, const std::vector<float>& normals,
+                                 const std::vector<float>& referencePositions,
+                                 const std::vector<float>& referenceNormals);
+
 // Same order on both sides: the largest coordinate difference.
 double maxAbsDifference(const std::vector<float>& a, const std::vector<float>& b);
 

@@ -94,6 +94,30 @@ struct LimitCaseResult {
     std::optional<OsdLimitFigures> osd;
 };
 
+// One way of evaluating a surface case's points (position, du, dv, then the unit normal), serial.
+struct SurfaceWay {
+    std::string library;  // "quadtri" or "opensubdiv"
+    // quadtri: "face_surface" (FaceSurfaceFactory); OpenSubdiv: "bfr_default" (Bfr::Surface at its
+    // approximation levels 2 smooth / 6 sharp), "bfr_approx10" (both at 10) or "patch_table_cpu"
+    // (Far::PatchTable, adaptive to level 2, Gregory end caps, Osd::CpuEvaluator::EvalPatches)
+    std::string way;
+    Timing factoryMs;               // from the mesh's arrays to a factory (refiner, analysis, patch table)
+    Timing pointsMs;                // every point, a new factory's caches empty (PatchTable: its local points too)
+    std::optional<Timing> warmMs;   // every point again, the factory's caches full (Bfr, quadtri)
+    // The farthest point from Bfr at level 10 evaluated in double, / the bounding-box diagonal
+    std::optional<double> positionError;
+    std::optional<double> normalError;    // the largest angle between the two normals, radians
+};
+
+// Points at random (u, v) on every face of a cage, grouped by face, evaluated by each way.
+struct SurfaceCaseResult {
+    std::string mesh;
+    std::string scheme;
+    int faces = 0;
+    int points = 0;
+    std::vector<SurfaceWay> ways;
+};
+
 // memcpy bandwidth in GB/s (bytes read + written), on one thread and on all.
 struct MemcpyFigures {
     std::size_t bytes = 0;  // bytes copied (the copy touches twice as many)
@@ -123,6 +147,7 @@ struct BenchResult {
     std::vector<CaseResult> cases;
     std::vector<LimitCaseResult> limitCases;
     std::vector<FrameCaseResult> frameCases;
+    std::vector<SurfaceCaseResult> surfaceCases;
 };
 
 }  // namespace quadtri::bench

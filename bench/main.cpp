@@ -2,7 +2,7 @@
 // whole frame (skin, level N's limit positions and normals) on ~10 000-face cages, build time (one thread and all),
 // table bytes, memory and evaluation time per case, checked for agreement first, plus memcpy bandwidth for
 // reference (256 MiB, and per case a copy the size of the evaluation's working set).
-//   quadtri-bench [--quick] [--limit | --frame] [--json FILE] [--mesh NAME] [--keep-freed-memory]
+//   quadtri-bench [--quick] [--limit | --frame | --surface] [--json FILE] [--mesh NAME] [--keep-freed-memory]
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -30,8 +30,10 @@
 #include "bench/opensubdiv/osd_case.h"
 #include "bench/opensubdiv/osd_frame_case.h"
 #include "bench/opensubdiv/osd_limit_case.h"
+#include "bench/opensubdiv/osd_surface_case.h"
 #include "bench/quadtri_case.h"
 #include "bench/report.h"
+#include "bench/surface_case.h"
 #include "bench/meshes/sphere.h"
 #include "bench/meshes/torus.h"
 #include "tools/obj_io.h"
@@ -139,6 +141,18 @@ std::vector<CaseSpec> frameCaseList(bool quick) {
     return cases;
 }
 
+// Surface cases: random (u, v) on every face; the regular quad and triangle tori and the limb
+// under catmull-clark on both sides (OpenSubdiv's Catmark evaluates any cage, its triangles as
+// irregular faces), the limb under schaefer-warren quadtri alone. --quick: the quad torus and the
+// limb, one point a face.
+std::vector<CaseSpec> surfaceCaseList(bool quick) {
+    std::vector<CaseSpec> cases = {{kLimbName, Scheme::CatmullClark, OsdScheme::Catmark, 0},
+                                   {kLimbName, Scheme::SchaeferWarren, std::nullopt, 0},
+                                   {torusName(100, TorusFaces::Quads), Scheme::CatmullClark, OsdScheme::Catmark, 0}};
+    if (!quick) cases.push_back({torusName(kFrameTriTorus, TorusFaces::Triangles), Scheme::Loop, OsdScheme::Loop, 0});
+    return cases;
+}
+
 std::string schemeName(const CaseSpec& spec) {
     const std::string qt = toString(spec.scheme);
     if (!spec.osd) return qt;
@@ -218,6 +232,60 @@ LimitCaseResult runLimitCase(const ControlMesh& mesh, const CaseSpec& spec, int 
     return result;
 }
 
+// The cage of a surface case: a generated torus, or the limb with its creases and tags.
+SurfaceCage surfaceCage(const CaseSpec& spec, const ControlMesh* mesh, const io::ObjMesh* limb) {
+    SurfaceCage cage;
+    Options options;
+    options.scheme = spec.scheme;
+    if (limb) {
+        cage.mesh.name = spec.mesh;
+        cage.mesh.numVertices = limb->numVertices();
+        cage.mesh.faceSizes = limb->faceSizes;
+        cage.mesh.faceVerts = limb->faceVerts;
+        cage.mesh.positions = limb->positions;
+        cage.creasePairs = limb->creasePairs;
+        cage.creaseSharpness = limb->creaseSharpness;
+        cage.options = limb->applyTags(options);
+        if (!limb->corners.empty() || !limb->holes.empty())
+            throw std::logic_error(spec.mesh + ": the surface cases take creases only");
+    } else {
+        cage.mesh = *mesh;
+        cage.options = options;
+    }
+    return cage;
+}
+
+// Every way of evaluating the case's points, quadtri's and OpenSubdiv's, each way's errors measured
+// against Bfr at approximation level 10; quadtri's must be within 1e-5 of the diagonal first.
+SurfaceCaseResult runSurfaceCase(const CaseSpec& spec, const SurfaceCage& cage, int pointsPerFace, int reps) {
+    SurfaceCaseResult result;
+    result.mesh = spec.mesh;
+    result.scheme = schemeName(spec);
+    result.faces = cage.mesh.numFaces();
+    SurfaceCase qt(cage, pointsPerFace);
+    qt.prepare();
+    result.points = qt.points().size();
+    std::optional<OsdSurfaceCase> osd;
+    SurfaceWay quadtri = qt.measure(reps);
+    if (spec.osd) {
+        osd.emplace(cage, *spec.osd, qt.points());
+        osd->prepare();
+        const InOrderDifference d = compareInOrder(qt.positions(), qt.normals(), osd->referencePositions(),
+                                                   osd->referenceNormals());
+        quadtri.positionError = d.position / cage.mesh.boundingBoxDiagonal();
+        quadtri.normalError = d.normalAngle;
+        if (!(*quadtri.positionError < 1e-5))
+            throw std::runtime_error(spec.mesh + ": quadtri's surface points differ from Bfr's at level 10 by " +
+                                     std::to_string(*quadtri.positionError) + " of the diagonal");
+        std::cerr << "  agrees with Bfr at level 10: points within " << *quadtri.positionError
+                  << " of the diagonal, normals within " << *quadtri.normalError << " rad\n";
+    }
+    result.ways.push_back(quadtri);
+    if (osd)
+        for (const SurfaceWay& way : osd->measure(reps)) result.ways.push_back(way);
+    return result;
+}
+
 // Where the two sides' frames are compared before timing: well into the bend (as the demo).
 constexpr float kFrameCheckRadians = 1.2f;
 
@@ -289,16 +357,18 @@ std::string cpuModel() {
 
 int usage(const char* message) {
     if (message) std::cerr << "quadtri-bench: " << message << "\n";
-    std::cerr << "usage: quadtri-bench [--quick] [--limit | --frame] [--json FILE] [--mesh NAME] [--keep-freed-memory]\n"
+    std::cerr << "usage: quadtri-bench [--quick] [--limit | --frame | --surface] [--json FILE] [--mesh NAME] [--keep-freed-memory]\n"
                  "  --quick      CI-sized run: 100x100 tori at levels 2-3 (their limit and frames at 2),\n"
                  "               the 2000-segment spheres at level 1, 3 repetitions\n"
                  "  --limit      only the limit cases (limit positions + normals, mesh normals)\n"
                  "  --frame      only the frame cases (skin + level N's limit positions and normals)\n"
+                 "  --surface    only the surface cases (points at random (u, v) on every face, against Bfr)\n"
                  "  --json FILE  also write the figures as JSON to FILE\n"
                  "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
                  "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad,\n"
                  "               torus1000_quad;\n"
-                 "               frames: torus100_quad, torus71_tri, mixed_limb), e.g. to profile it\n"
+                 "               frames: torus100_quad, torus71_tri, mixed_limb;\n"
+                 "               surfaces: mixed_limb, torus100_quad, torus71_tri), e.g. to profile it\n"
                  "  --keep-freed-memory  glibc keeps what both libraries free for their next builds\n"
                  "               (mallopt: blocks up to 256 MiB from its heap, 1 GiB of free heap kept),\n"
                  "               as an engine that rebuilds often may set it (docs/performance.md, Rebuilding often)\n";
@@ -306,7 +376,7 @@ int usage(const char* message) {
 }
 
 int run(int argc, char** argv) {
-    bool quick = false, limitOnly = false, frameOnly = false, keepFreed = false;
+    bool quick = false, limitOnly = false, frameOnly = false, surfaceOnly = false, keepFreed = false;
     std::string jsonPath, onlyMesh;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) quick = true;
@@ -314,11 +384,13 @@ int run(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) onlyMesh = argv[++i];
         else if (!std::strcmp(argv[i], "--limit")) limitOnly = true;
         else if (!std::strcmp(argv[i], "--frame")) frameOnly = true;
+        else if (!std::strcmp(argv[i], "--surface")) surfaceOnly = true;
         else if (!std::strcmp(argv[i], "--keep-freed-memory")) keepFreed = true;
         else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return usage(nullptr);
         else return usage((std::string("unknown argument ") + argv[i]).c_str());
     }
-    if (limitOnly && frameOnly) return usage("--limit and --frame exclude each other");
+    if (int(limitOnly) + int(frameOnly) + int(surfaceOnly) > 1)
+        return usage("--limit, --frame and --surface exclude each other");
     if (keepFreed) {
 #ifdef __GLIBC__
         // Set before the cases allocate. By default glibc maps blocks past its (adjusting)
@@ -362,10 +434,13 @@ int run(int argc, char** argv) {
                        list.end());
         return list;
     };
-    const std::vector<CaseSpec> frames = ofMesh(limitOnly ? std::vector<CaseSpec>{} : frameCaseList(quick));
-    const std::vector<CaseSpec> cases = ofMesh(limitOnly || frameOnly ? std::vector<CaseSpec>{} : caseList(quick));
-    const std::vector<CaseSpec> limits = ofMesh(frameOnly ? std::vector<CaseSpec>{} : limitCaseList(quick));
-    if (frames.empty() && cases.empty() && limits.empty()) return usage(("no case has the mesh " + onlyMesh).c_str());
+    const bool all = !limitOnly && !frameOnly && !surfaceOnly;
+    const std::vector<CaseSpec> frames = ofMesh(all || frameOnly ? frameCaseList(quick) : std::vector<CaseSpec>{});
+    const std::vector<CaseSpec> cases = ofMesh(all ? caseList(quick) : std::vector<CaseSpec>{});
+    const std::vector<CaseSpec> limits = ofMesh(all || limitOnly ? limitCaseList(quick) : std::vector<CaseSpec>{});
+    const std::vector<CaseSpec> surfaces = ofMesh(all || surfaceOnly ? surfaceCaseList(quick) : std::vector<CaseSpec>{});
+    if (frames.empty() && cases.empty() && limits.empty() && surfaces.empty())
+        return usage(("no case has the mesh " + onlyMesh).c_str());
 
     std::map<std::string, ControlMesh> meshes;
     auto meshOf = [&](const std::string& name) -> const ControlMesh& {
@@ -397,6 +472,15 @@ int run(int argc, char** argv) {
         } catch (const MemoryBudgetError& e) {  // a level over the budget
             std::cerr << "  skipped: " << e.what() << "\n";
         }
+    }
+
+    for (size_t i = 0; i < surfaces.size(); ++i) {
+        const CaseSpec& spec = surfaces[i];
+        std::cerr << "[surface " << i + 1 << "/" << surfaces.size() << "] " << spec.mesh << " " << schemeName(spec) << "\n";
+        const bool isLimb = spec.mesh == kLimbName;
+        if (isLimb && !limb) limb = io::readObj(std::string(QUADTRI_BENCH_DATA_DIR) + "/mixed_limb.obj");
+        const SurfaceCage cage = surfaceCage(spec, isLimb ? nullptr : &meshOf(spec.mesh), isLimb ? &*limb : nullptr);
+        result.surfaceCases.push_back(runSurfaceCase(spec, cage, quick ? 1 : 8, reps));
     }
 
     printMarkdown(std::cout, result);

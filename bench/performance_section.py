@@ -228,6 +228,34 @@ def limit_table(r):
     return rows
 
 
+def per_point(ms, points):
+    return f"{1000.0 * ms / points:.3f}" if ms is not None else "–"
+
+
+def error(v):
+    return "–" if v is None else f"{v:.1e}"
+
+
+def surface_table(r):
+    rows = ["| mesh | scheme | points | way | factory ms | µs a point, new factory | µs a point, caches full"
+            " | position error | normal error rad | OSD / quadtri: factory | points | caches full |",
+            "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for c in r.get("surface_cases", []):
+        q = c["ways"][0]
+        for w in c["ways"]:
+            peer = w is not q
+            warm = w["warm_ms"]["median"] if w["warm_ms"] else None
+            q_warm = q["warm_ms"]["median"] if q["warm_ms"] else None
+            rows.append(
+                f"| {c['mesh']} | {c['scheme']} | {c['points']} | {w['library']} `{w['way']}` | "
+                f"{timing(w['factory_ms'])} | {per_point(w['points_ms']['median'], c['points'])} | "
+                f"{per_point(warm, c['points'])} | {error(w['position_error'])} | {error(w['normal_error'])} | "
+                f"{ratio(median(w['factory_ms']), median(q['factory_ms'])) if peer else ''} | "
+                f"{ratio(median(w['points_ms']), median(q['points_ms'])) if peer else ''} | "
+                f"{ratio(warm, q_warm) if peer and warm and q_warm else ''} |")
+    return rows
+
+
 def summary(r):
     """Ratio ranges at levels >= 3 (all levels where no case reaches 3)."""
     osd_cases = [c for c in r["cases"] if c["osd"]]
@@ -412,6 +440,16 @@ def section(r, note):
                   " `Osd::OmpEvaluator`, or Far's `UpdateValues` + `UpdateDerivs` compiled into the bench):", ""]
         lines += limit_table(r)
         lines += [""] + limit_summary(r)
+    if r.get("surface_cases"):
+        lines += ["", "Surface evaluation at random (u, v), 8 a face (1 with `--quick`), grouped by face, serial, 3 floats:"
+                  " position, du, dv, then the unit normal (quadtri: `FaceSurfaceFactory` + `FaceSurface::evaluate`;"
+                  " OpenSubdiv: `Bfr::Surface` at its default approximation levels 2 smooth / 6 sharp and at 10, and"
+                  " `Far::PatchTable` adaptive to level 2 with Gregory end caps, `Far::PatchMap` and"
+                  " `Osd::CpuEvaluator::EvalPatches`, its local points by a stencil table each time). Factory: from the"
+                  " mesh's arrays (refiner, analysis, patch table). A new factory's pass grows its caches (quadtri's"
+                  " trees, Bfr's irregular patches; the patch table finds each point's patch); caches full: the same"
+                  " points again. Errors: against Bfr at level 10 evaluated in double, of the bounding-box diagonal:", ""]
+        lines += surface_table(r)
     lines += ["", END]
     return "\n".join(lines) + "\n"
 

@@ -260,6 +260,47 @@ void printFramesMarkdown(std::ostream& out, const std::vector<FrameCaseResult>& 
     out << "\n";
 }
 
+std::string json(const std::optional<double>& v) { return v ? number(*v) : "null"; }
+
+void writeSurfaceCaseJson(std::ostream& f, const SurfaceCaseResult& c) {
+    f << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme) << ", \"faces\": " << c.faces
+      << ", \"points\": " << c.points << ",\n     \"ways\": [";
+    for (std::size_t i = 0; i < c.ways.size(); ++i) {
+        const SurfaceWay& w = c.ways[i];
+        f << (i ? ",\n" : "\n") << "       {\"library\": " << jsonString(w.library) << ", \"way\": " << jsonString(w.way)
+          << ", \"factory_ms\": " << json(w.factoryMs) << ",\n        \"points_ms\": " << json(w.pointsMs)
+          << ", \"warm_ms\": " << json(w.warmMs) << ",\n        \"position_error\": " << json(w.positionError)
+          << ", \"normal_error\": " << json(w.normalError) << "}";
+    }
+    f << "]}";
+}
+
+// Per case and way: the factory, microseconds a point (a new factory, then the caches full) and
+// the errors against Bfr at level 10; the ratios OpenSubdiv's way / quadtri's.
+void printSurfaceMarkdown(std::ostream& out, const std::vector<SurfaceCaseResult>& cases) {
+    if (cases.empty()) return;
+    out << "\nSurface evaluation at random (u, v) on every face, serial: position, du, dv, unit normal (µs a point:"
+           " a new factory / its caches full; errors against Bfr at approximation level 10, of the diagonal and in"
+           " rad; ×: OpenSubdiv's time / quadtri's)\n\n"
+        << "| mesh | scheme | points | way | factory ms | µs/point | warm µs/point | position error | normal error |"
+           " × factory | × points | × warm |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const SurfaceCaseResult& c : cases) {
+        const SurfaceWay& q = c.ways.front();
+        auto perPoint = [&](double msAll) { return number(1000.0 * msAll / c.points, "%.3f"); };
+        for (const SurfaceWay& w : c.ways) {
+            const bool peer = &w != &q;
+            out << "| " << c.mesh << " | " << c.scheme << " | " << c.points << " | " << w.library << " " << w.way << " | "
+                << ms(w.factoryMs.median) << " | " << perPoint(w.pointsMs.median) << " | "
+                << (w.warmMs ? perPoint(w.warmMs->median) : "–") << " | "
+                << (w.positionError ? number(*w.positionError, "%.1e") : "–") << " | "
+                << (w.normalError ? number(*w.normalError, "%.1e") : "–") << " | "
+                << (peer ? ratio(w.factoryMs.median, q.factoryMs.median) : "") << " | "
+                << (peer ? ratio(w.pointsMs.median, q.pointsMs.median) : "") << " | "
+                << (peer && w.warmMs && q.warmMs ? ratio(w.warmMs->median, q.warmMs->median) : "") << " |\n";
+        }
+    }
+}
+
 }  // namespace
 
 void writeJson(const std::string& path, const BenchResult& r) {
@@ -284,6 +325,11 @@ void writeJson(const std::string& path, const BenchResult& r) {
         f << (i ? ",\n" : "\n");
         writeLimitCaseJson(f, r.limitCases[i]);
     }
+    f << "\n  ],\n  \"surface_cases\": [";
+    for (std::size_t i = 0; i < r.surfaceCases.size(); ++i) {
+        f << (i ? ",\n" : "\n");
+        writeSurfaceCaseJson(f, r.surfaceCases[i]);
+    }
     f << "\n  ]\n}\n";
     if (!f) throw std::runtime_error("cannot write " + path);
 }
@@ -295,6 +341,7 @@ void printMarkdown(std::ostream& out, const BenchResult& r) {
         << number(r.memcpyLarge.gbps1, "%.1f") << " GB/s with 1 thread, " << number(r.memcpyLarge.gbpsAll, "%.1f")
         << " GB/s with " << r.threads << "\n";
     printLimitMarkdown(out, r.limitCases);
+    printSurfaceMarkdown(out, r.surfaceCases);
 }
 
 }  // namespace quadtri::bench

@@ -16,6 +16,11 @@ namespace quadtri {
 inline namespace v0 {
 
 class Refiner;
+class FaceSurface;
+namespace internal {
+class FaceTree;
+class FVarChannelRefinement;
+}
 
 // How (u, v) cover a base face, as OpenSubdiv's Bfr::Parameterization: a quad is the unit square
 // from its first corner (corner 1 at (1, 0), corner 3 at (0, 1)); a triangle under a scheme that
@@ -71,13 +76,17 @@ public:
 };
 
 // The limit surface of a Refiner's control mesh (its level 0 and options; the Refiner may go
-// afterwards). Construction copies level 0 and nothing else: each point is found by refining
+// afterwards), or of a mesh given as a TopologyDescriptor. Construction copies (or builds) level 0
+// and nothing else: each point is found by refining
 // the neighbourhood of its face locally, with the scheme's own rules, until the point lies in a
 // regular sub-face (a bicubic B-spline patch on quads, a quartic box-spline patch on triangles)
 // or maxDepth is reached. Every method is const and may run on many threads at once.
 class QUADTRI_API LimitSurface {
 public:
     explicit LimitSurface(const Refiner& refiner, LimitSurfaceOptions surfaceOptions = {});
+    // Without a Refiner: level 0 built from the mesh's arrays straight into the surface, as a
+    // Refiner would build it (TopologyError for bad input).
+    LimitSurface(const TopologyDescriptor& desc, const Options& options, LimitSurfaceOptions surfaceOptions = {});
     ~LimitSurface();
     LimitSurface(LimitSurface&&) noexcept;
     LimitSurface& operator=(LimitSurface&&) noexcept;
@@ -124,18 +133,79 @@ public:
                                        const double* v) const;
 
 private:
+    friend class FaceSurfaceFactory;
     struct Channel;  // a channel's value mesh (limit_surface.cpp)
 
+    LimitSurface(const Options& options, LimitSurfaceOptions surfaceOptions, std::shared_ptr<const Topology> base);
+    void addChannel(const internal::FVarChannelRefinement& source);
     void check(int face, double u, double v) const;
     const Channel& channel(int c) const;
-    template <class StencilOf>
-    LimitStencilTable tableOf(int count, const int* faces, const double* u, const double* v, int numSources,
-                              const StencilOf& stencilOf) const;
+    // The table of the vertex surface (channel -1) or of face-varying channel `channel`.
+    LimitStencilTable tableOf(int channel, int count, const int* faces, const double* u, const double* v) const;
 
     Options options_;
     LimitSurfaceOptions surfaceOptions_;
     std::shared_ptr<const Topology> base_;
     std::vector<std::shared_ptr<const Channel>> channels_;
+};
+
+// One base face's surface, for many points of it (as Bfr::Surface), made by a FaceSurfaceFactory:
+// the local refinement one point needed stays for the next, so that points in a regular sub-face
+// already reached cost one basis evaluation (docs/surface.md, "Faces' trees"). Each point's
+// stencil is exactly the one LimitSurface::stencil (or fvarStencil) gives it.
+class QUADTRI_API FaceSurface {
+public:
+    FaceSurface();
+    ~FaceSurface();
+    FaceSurface(FaceSurface&&) noexcept;
+    FaceSurface& operator=(FaceSurface&&) noexcept;
+
+    int face() const;  // -1 when empty
+    const FaceParameterization& parameterization() const;
+
+    // The weights of (u, v) over the control vertices (or the channel's values). Throws
+    // SurfaceError for (u, v) outside the face's domain, or an empty FaceSurface.
+    void stencil(double u, double v, LimitPointStencil& out);
+    // The point from `control` (the control vertices, or the channel's values): `width` floats
+    // each, `stride` floats apart, as LimitSurface::evaluate.
+    void evaluate(double u, double v, const float* control, int width, int stride, float* position,
+                  float* dPdu = nullptr, float* dPdv = nullptr);
+
+private:
+    friend class FaceSurfaceFactory;
+    std::shared_ptr<void> shared_;  // the factory's trees, alive while this surface is
+    internal::FaceTree* tree_ = nullptr;
+    int face_ = -1;
+    const std::vector<int>* columns_ = nullptr;  // per column of the tree: the base vertex (value-mesh vertex)
+    std::vector<int> sources_;  // face-varying: per column, the channel value it reads
+    const std::vector<int>* valueOf_ = nullptr;
+    LimitPointStencil local_;
+};
+
+// Makes the FaceSurfaces of a LimitSurface's faces: its vertex surface, or (channel >= 0) a
+// face-varying channel's. Faces whose neighbourhoods have the same topology and sharpness share
+// one tree of sub-patches (the tree depends on nothing else), as Bfr::SurfaceFactory caches its
+// irregular patches, so that a mesh's repeated configurations are refined once. The factory and
+// the FaceSurfaces it made are for one thread at a time: make one factory per thread. The
+// LimitSurface must outlive them. Throws SurfaceError for a channel out of range.
+class QUADTRI_API FaceSurfaceFactory {
+public:
+    explicit FaceSurfaceFactory(const LimitSurface& surface, int channel = -1);
+    ~FaceSurfaceFactory();
+
+    // Face `face`'s surface. Throws SurfaceError for a face out of range or a hole.
+    FaceSurface faceSurface(int face);
+    // The same into `surface`, reusing its memory. A face met again costs a lookup: the factory
+    // keeps each face's tree and neighbourhood.
+    void faceSurface(int face, FaceSurface& surface);
+    // Neighbourhood shapes met so far that needed a tree of their own (regular faces need none).
+    int numShapes() const;
+
+private:
+    struct Shared;
+    const LimitSurface* surface_;
+    const std::vector<int>* valueOf_ = nullptr;
+    std::shared_ptr<Shared> shared_;
 };
 
 }  // namespace v0

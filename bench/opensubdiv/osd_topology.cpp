@@ -8,7 +8,9 @@
 
 namespace quadtri::bench {
 
-std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const ControlMesh& mesh, OsdScheme scheme) {
+std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const ControlMesh& mesh, OsdScheme scheme,
+                                                                     const std::vector<int>& creasePairs,
+                                                                     const std::vector<float>& creaseSharpness) {
     namespace Far = OpenSubdiv::Far;
     namespace Sdc = OpenSubdiv::Sdc;
     Far::TopologyDescriptor desc;
@@ -16,6 +18,9 @@ std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const Contr
     desc.numFaces = mesh.numFaces();
     desc.numVertsPerFace = mesh.faceSizes.data();
     desc.vertIndicesPerFace = mesh.faceVerts.data();
+    desc.numCreases = int(creaseSharpness.size());
+    desc.creaseVertexIndexPairs = creasePairs.data();
+    desc.creaseWeights = creaseSharpness.data();
     Sdc::Options sdc;
     sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
     using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include <opensubdiv/far/topologyRefiner.h>
 
@@ -11,7 +12,10 @@
 
 namespace quadtri::bench {
 
-// Unrefined; std::runtime_error naming the mesh if OpenSubdiv refuses its topology.
-std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const ControlMesh& mesh, OsdScheme scheme);
+// Unrefined, with the given creases (2 vertices and a sharpness each); std::runtime_error naming
+// the mesh if OpenSubdiv refuses its topology.
+std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const ControlMesh& mesh, OsdScheme scheme,
+                                                                     const std::vector<int>& creasePairs = {},
+                                                                     const std::vector<float>& creaseSharpness = {});
 
 }  // namespace quadtri::bench

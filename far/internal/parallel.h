@@ -45,6 +45,10 @@ void forEachPart(int begin, int end, const Body& body) {
 // body(first, last) over sub-ranges of [begin, end) of about `grain` items.
 template <typename Index, typename Body>
 void forEachRange(Index begin, Index end, Index grain, const Body& body) {
+    if (end - begin <= grain) {  // one range: no task (local refinement runs many tiny loops)
+        if (begin < end) body(begin, end);
+        return;
+    }
     tbb::parallel_for(tbb::blocked_range<Index>(begin, end, grain),
                       [&](const tbb::blocked_range<Index>& r) { body(r.begin(), r.end()); });
 }

@@ -15,9 +15,8 @@
 #include "far/limit/limit_ring.h"
 #include "far/limit/limit_table.h"
 #include "far/schemes/scheme.h"
-#include "far/surface/local_mesh.h"
-#include "far/surface/patch_basis.h"
-#include "far/surface/regular_patch.h"
+#include "far/surface/face_tree.h"
+#include "far/topology/topology_builder.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -26,150 +25,42 @@ using namespace internal;
 
 namespace {
 
-// The point in the followed sub-face's own (s, t), and d(s, t)/d(u, v) back to the base face.
-struct Where {
-    double s = 0, t = 0;
-    double k[2][2] = {{1, 0}, {0, 1}};  // k[0]: ds/du, ds/dv; k[1]: dt/du, dt/dv
-
-    // (s, t) <- a (s, t) + b, kept inside the domain against rounding.
-    void map(const double a[2][2], double b0, double b1, bool triangle) {
-        const double s1 = a[0][0] * s + a[0][1] * t + b0, t1 = a[1][0] * s + a[1][1] * t + b1;
-        s = std::clamp(s1, 0.0, 1.0);
-        t = std::clamp(t1, 0.0, 1.0);
-        if (triangle && s + t > 1) {
-            const double over = s + t;
-            s /= over;
-            t /= over;
-        }
-        double k1[2][2];
-        for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) k1[i][j] = a[i][0] * k[0][j] + a[i][1] * k[1][j];
-        std::copy(&k1[0][0], &k1[0][0] + 4, &k[0][0]);
-    }
-};
-
-// The child of a quad (or triangle split in four) that holds the point, the point moved into it
-// (children as refine_topology.cpp numbers them: corner i's first, a triangle's middle last).
-int descend(bool quad, Where& w) {
-    if (quad) {
-        static constexpr double kA[4][2][2] = {
-            {{2, 0}, {0, 2}}, {{0, 2}, {-2, 0}}, {{-2, 0}, {0, -2}}, {{0, -2}, {2, 0}}};
-        static constexpr double kB[4][2] = {{0, 0}, {0, 2}, {2, 2}, {2, 0}};
-        const int child = w.s < 0.5 ? (w.t < 0.5 ? 0 : 3) : (w.t < 0.5 ? 1 : 2);
-        w.map(kA[child], kB[child][0], kB[child][1], false);
-        return child;
-    }
-    static constexpr double kA[4][2][2] = {
-        {{2, 0}, {0, 2}}, {{0, 2}, {-2, -2}}, {{-2, -2}, {2, 0}}, {{2, 2}, {-2, 0}}};
-    static constexpr double kB[4][2] = {{0, 0}, {0, 2}, {2, 0}, {-1, 1}};
-    const int child = w.s + w.t <= 0.5 ? 0 : w.s >= 0.5 ? 1 : w.t >= 0.5 ? 2 : 3;
-    w.map(kA[child], kB[child][0], kB[child][1], true);
-    return child;
+Options counterClockwise(Options o) {
+    o.leftHanded = false;  // every level stores its faces counter-clockwise already
+    return o;
 }
 
-// The sub-face of an n-gon's (u, v), checked to hold it, and the point in it.
-int enterSubFace(const FaceParameterization& p, double u, double v, Where& w) {
-    const int i = p.subFaceAt(u, v);
-    static constexpr double kTwice[2][2] = {{2, 0}, {0, 2}};
-    w.s = u;
-    w.t = v;
-    w.map(kTwice, -2.0 * (i % p.gridWidth), -2.0 * (i / p.gridWidth), false);
-    return i;
-}
-
-// Under Sharpen::All a face is its corners' bilinear (linear) patch.
-PatchKind linearPatch(const LocalMesh& mesh, std::vector<int>& points) {
-    const IndexSpan corners = mesh.topology.verticesOfFace(mesh.face);
-    points.assign(corners.begin(), corners.end());
-    return corners.size() == 4 ? PatchKind::Bilinear : PatchKind::Linear;
-}
-
-// The weights of (u, v) of `face` over `base`'s vertices (`o` with counter-clockwise faces).
-void localStencil(const Topology& base, const Options& o, const LimitSurfaceOptions& surfaceOptions, Sharpen sharpen,
-                  int face, double u, double v, LimitPointStencil& out) {
-    const SchemeRules& rules = rulesOf(o.scheme);
-    const int rings = surfaceOptions.rings > 0 ? surfaceOptions.rings : rules.surfaceRings();
-    const bool linear = sharpen == Sharpen::All && rules.surfacePatches().sharpIsLinear;
-    thread_local WalkScratch baseScratch;  // sized to the largest base mesh once per thread
-    WalkScratch scratch;
-    std::vector<int> columns;
-    LocalMesh mesh = cutBase(base, face, rings, o, baseScratch, columns, sharpen);
-
-    Where w;
-    w.s = u;
-    w.t = v;
-    const FaceParameterization param = FaceParameterization::of(o.scheme, base.faceSize(face));
-    int depth = 0;
-    if (param.type == FaceParameterization::Type::QuadSubFaces) {
-        mesh = refineTowards(mesh, enterSubFace(param, u, v, w), rings, o, scratch, nullptr, sharpen);
-        depth = 1;
-    }
-
-    LimitMask local;  // weights over the final local mesh's vertices
-    std::vector<int> points;
-    double wP[16], wDs[16], wDt[16];
-    for (;; ++depth) {
-        const PatchKind kind = linear ? linearPatch(mesh, points) : regularPatch(mesh.topology, mesh.face, o, points);
-        if (kind != PatchKind::None) {
-            switch (kind) {
-            case PatchKind::BSpline: bSplineWeights(w.s, w.t, wP, wDs, wDt); break;
-            case PatchKind::BoxSpline: boxSplineWeights(w.s, w.t, wP, wDs, wDt); break;
-            case PatchKind::Bilinear: bilinearWeights(w.s, w.t, wP, wDs, wDt); break;
-            default: linearWeights(w.s, w.t, wP, wDs, wDt); break;
-            }
-            for (std::size_t i = 0; i < points.size(); ++i) local.add(points[i], wP[i], wDs[i], wDt[i]);
-            break;
-        }
-        const bool quad = mesh.topology.faceSize(mesh.face) == 4;
-        if (depth >= surfaceOptions.maxDepth) {
-            // The quadratic through the exact limit points of the sub-face's next level.
-            std::vector<int> nodes;
-            LocalMesh next = refineTowards(mesh, 0, rings, o, scratch, &nodes, sharpen);
-            if (quad)
-                quadraticQuadWeights(w.s, w.t, wP, wDs, wDt);
-            else
-                quadraticTriangleWeights(w.s, w.t, wP, wDs, wDt);
-            VertexRing ring;
-            LimitMask limit;
-            LimitMaskCache cache;
-            for (std::size_t i = 0; i < nodes.size(); ++i) {
-                orderVertexRing(next.topology, nodes[i], -1, ring);
-                limit.clear();
-                rules.limitMask(LimitVertex{next.topology, o, ring, limitRule(next.topology, ring)}, cache, limit);
-                for (int k = 0; k < limit.size(); ++k)
-                    local.add(limit.indices[k], wP[i] * limit.position[k], wDs[i] * limit.position[k],
-                                   wDt[i] * limit.position[k]);
-            }
-            mesh = std::move(next);
-            break;
-        }
-        const int child = descend(quad, w);
-        mesh = refineTowards(mesh, child, rings, o, scratch, nullptr, sharpen);
-    }
-
-    // Over the base neighbourhood, then the control vertices; derivatives back to (u, v).
-    const int n = mesh.numColumns;
-    std::vector<double> p(n, 0.0), ds(n, 0.0), dt(n, 0.0);
-    for (int k = 0; k < local.size(); ++k) {
-        const double* row = mesh.row(local.indices[k]);
-        const double a = local.position[k], b = local.du[k], c = local.dv[k];
-        for (int j = 0; j < n; ++j) {
-            p[j] += a * row[j];
-            ds[j] += b * row[j];
-            dt[j] += c * row[j];
-        }
-    }
+// A value mesh's stencil over the channel's values: value-vertices that carry the same value merge.
+void mergeValues(const std::vector<int>& valueOf, const LimitPointStencil& local, LimitPointStencil& out) {
     out.indices.clear();
     out.position.clear();
     out.du.clear();
     out.dv.clear();
-    for (int j = 0; j < n; ++j) {
-        if (p[j] == 0.0 && ds[j] == 0.0 && dt[j] == 0.0) continue;
-        out.indices.push_back(columns[j]);
-        out.position.push_back(p[j]);
-        out.du.push_back(ds[j] * w.k[0][0] + dt[j] * w.k[1][0]);
-        out.dv.push_back(ds[j] * w.k[0][1] + dt[j] * w.k[1][1]);
+    for (int k = 0; k < local.size(); ++k) {
+        const int value = valueOf[std::size_t(local.indices[std::size_t(k)])];
+        const auto at = std::find(out.indices.begin(), out.indices.end(), value);
+        if (at == out.indices.end()) {
+            out.indices.push_back(value);
+            out.position.push_back(local.position[std::size_t(k)]);
+            out.du.push_back(local.du[std::size_t(k)]);
+            out.dv.push_back(local.dv[std::size_t(k)]);
+            continue;
+        }
+        const std::size_t j = std::size_t(at - out.indices.begin());
+        out.position[j] += local.position[std::size_t(k)];
+        out.du[j] += local.du[std::size_t(k)];
+        out.dv[j] += local.dv[std::size_t(k)];
     }
+}
+
+// The weights of (u, v) of `face` over `base`'s vertices (`o` with counter-clockwise faces), on
+// a tree of its own.
+void localStencil(const Topology& base, const Options& o, const LimitSurfaceOptions& surfaceOptions, Sharpen sharpen,
+                  int face, double u, double v, LimitPointStencil& out) {
+    thread_local WalkScratch baseScratch;  // sized to the largest base mesh once per thread
+    FaceTrees trees(base, o, surfaceOptions, sharpen, baseScratch);
+    std::vector<int> columns;
+    trees.treeOf(face, columns).stencil(u, v, columns, out);
 }
 
 // The stencil applied to `control`.
@@ -203,29 +94,39 @@ struct LimitSurface::Channel {
 };
 
 LimitSurface::LimitSurface(const Refiner& refiner, LimitSurfaceOptions surfaceOptions)
-    : options_(refiner.options()), surfaceOptions_(surfaceOptions),
-      base_(std::make_shared<const Topology>(refiner.level(0))) {
+    : LimitSurface(refiner.options(), surfaceOptions, std::make_shared<const Topology>(refiner.level(0))) {
+    for (int c = 0; c < refiner.numFVarChannels(); ++c) addChannel(refiner.channel(c));
+}
+
+LimitSurface::LimitSurface(const TopologyDescriptor& desc, const Options& options, LimitSurfaceOptions surfaceOptions)
+    : LimitSurface(options, surfaceOptions, std::make_shared<const Topology>(buildBaseTopology(desc, options))) {
+    for (int c = 0; c < desc.numFVarChannels; ++c) addChannel(FVarChannelRefinement(desc, c, *base_, options_));
+}
+
+LimitSurface::LimitSurface(const Options& options, LimitSurfaceOptions surfaceOptions,
+                           std::shared_ptr<const Topology> base)
+    : options_(options), surfaceOptions_(surfaceOptions), base_(std::move(base)) {
     if (surfaceOptions_.maxDepth < 1 || surfaceOptions_.maxDepth > 30)
         throw SurfaceError("LimitSurface: maxDepth " + std::to_string(surfaceOptions_.maxDepth) +
                            " is outside 1..30");
     if (surfaceOptions_.rings < 0) throw SurfaceError("LimitSurface: rings must be 0 (the scheme's) or more");
-    for (int c = 0; c < refiner.numFVarChannels(); ++c) {
-        const FVarChannelRefinement& source = refiner.channel(c);
-        auto channel = std::make_shared<Channel>();
-        channel->values = source.surfaceMesh();
-        channel->valueOf = source.valueOfVertex();
-        channel->numValues = source.numValues(0);
-        for (int p : channel->values.faceVerts) channel->cornerValues.push_back(channel->valueOf[std::size_t(p)]);
-        channel->options = options_;
-        channel->options.leftHanded = false;
-        channel->options.boundary = BoundaryInterpolation::EdgeOnly;
-        switch (options_.fvarLinearInterpolation) {
-            case FVarLinearInterpolation::Boundaries: channel->sharpen = Sharpen::Boundaries; break;
-            case FVarLinearInterpolation::All: channel->sharpen = Sharpen::All; break;
-            default: break;
-        }
-        channels_.push_back(std::move(channel));
+}
+
+void LimitSurface::addChannel(const FVarChannelRefinement& source) {
+    auto channel = std::make_shared<Channel>();
+    channel->values = source.surfaceMesh();
+    channel->valueOf = source.valueOfVertex();
+    channel->numValues = source.numValues(0);
+    for (int p : channel->values.faceVerts) channel->cornerValues.push_back(channel->valueOf[std::size_t(p)]);
+    channel->options = options_;
+    channel->options.leftHanded = false;
+    channel->options.boundary = BoundaryInterpolation::EdgeOnly;
+    switch (options_.fvarLinearInterpolation) {
+        case FVarLinearInterpolation::Boundaries: channel->sharpen = Sharpen::Boundaries; break;
+        case FVarLinearInterpolation::All: channel->sharpen = Sharpen::All; break;
+        default: break;
     }
+    channels_.push_back(std::move(channel));
 }
 
 LimitSurface::~LimitSurface() = default;
@@ -257,9 +158,7 @@ void LimitSurface::check(int face, double u, double v) const {
 
 void LimitSurface::stencil(int face, double u, double v, LimitPointStencil& out) const {
     check(face, u, v);
-    Options o = options_;
-    o.leftHanded = false;  // every level stores its faces counter-clockwise already
-    localStencil(*base_, o, surfaceOptions_, Sharpen::None, face, u, v, out);
+    localStencil(*base_, counterClockwise(options_), surfaceOptions_, Sharpen::None, face, u, v, out);
 }
 
 void LimitSurface::evaluate(int face, double u, double v, const float* control, int width, int stride,
@@ -270,8 +169,7 @@ void LimitSurface::evaluate(int face, double u, double v, const float* control, 
 }
 
 LimitStencilTable LimitSurface::stencilTable(int count, const int* faces, const double* u, const double* v) const {
-    return tableOf(count, faces, u, v, numControlVertices(),
-                   [this](int face, double u, double v, LimitPointStencil& s) { stencil(face, u, v, s); });
+    return tableOf(-1, count, faces, u, v);
 }
 
 const LimitSurface::Channel& LimitSurface::channel(int c) const {
@@ -290,32 +188,12 @@ IndexSpan LimitSurface::fvarValuesOfFace(int c, int face) const {
     return {corners + base_->faceOffsets[std::size_t(face)], corners + base_->faceOffsets[std::size_t(face) + 1]};
 }
 
-// Over the value mesh's vertices first, then over the channel's values: value-vertices that
-// carry the same value merge.
 void LimitSurface::fvarStencil(int c, int face, double u, double v, LimitPointStencil& out) const {
     const Channel& ch = channel(c);
     check(face, u, v);
     LimitPointStencil local;
     localStencil(ch.values, ch.options, surfaceOptions_, ch.sharpen, face, u, v, local);
-    out.indices.clear();
-    out.position.clear();
-    out.du.clear();
-    out.dv.clear();
-    for (int k = 0; k < local.size(); ++k) {
-        const int value = ch.valueOf[std::size_t(local.indices[std::size_t(k)])];
-        const auto at = std::find(out.indices.begin(), out.indices.end(), value);
-        if (at == out.indices.end()) {
-            out.indices.push_back(value);
-            out.position.push_back(local.position[std::size_t(k)]);
-            out.du.push_back(local.du[std::size_t(k)]);
-            out.dv.push_back(local.dv[std::size_t(k)]);
-            continue;
-        }
-        const std::size_t j = std::size_t(at - out.indices.begin());
-        out.position[j] += local.position[std::size_t(k)];
-        out.du[j] += local.du[std::size_t(k)];
-        out.dv[j] += local.dv[std::size_t(k)];
-    }
+    mergeValues(ch.valueOf, local, out);
 }
 
 void LimitSurface::evaluateFVar(int c, int face, double u, double v, const float* values, int width, int stride,
@@ -327,13 +205,13 @@ void LimitSurface::evaluateFVar(int c, int face, double u, double v, const float
 
 LimitStencilTable LimitSurface::fvarStencilTable(int c, int count, const int* faces, const double* u,
                                                  const double* v) const {
-    return tableOf(count, faces, u, v, numFVarValues(c),
-                   [this, c](int face, double u, double v, LimitPointStencil& s) { fvarStencil(c, face, u, v, s); });
+    channel(c);  // the range check
+    return tableOf(c, count, faces, u, v);
 }
 
-template <class StencilOf>
-LimitStencilTable LimitSurface::tableOf(int count, const int* faces, const double* u, const double* v,
-                                        int numSources, const StencilOf& stencilOf) const {
+// Points grouped by face, each group (at most kGroup points) on a tree of its own: the same
+// stencils as one point at a time, in any order, on any number of threads.
+LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, const double* u, const double* v) const {
     for (int i = 0; i < count; ++i) {
         try {
             check(faces[i], u[i], v[i]);
@@ -341,16 +219,50 @@ LimitStencilTable LimitSurface::tableOf(int count, const int* faces, const doubl
             throw SurfaceError("point " + std::to_string(i) + ": " + e.what());
         }
     }
+    const Channel* ch = c >= 0 ? &channel(c) : nullptr;
+    const Topology& topology = ch ? ch->values : *base_;
+    const Options o = ch ? ch->options : counterClockwise(options_);
+    const Sharpen sharpen = ch ? ch->sharpen : Sharpen::None;
+
     LimitStencilTableD table;
-    table.numSourceVertices = numSources;
-    // Blocks of points side by side, each point's stencil its own: the same table on any threads.
-    constexpr int kBlock = 4096;
+    table.numSourceVertices = ch ? ch->numValues : numControlVertices();
+    constexpr int kBlock = 16384, kGroup = 256;
     std::vector<LimitPointStencil> block(std::size_t(std::min(count, kBlock)));
+    std::vector<int> order, groups;
+    // Each thread's trees, shared by its faces of one shape for the whole table.
+    parallel::ThreadLocal<std::unique_ptr<FaceTrees>> treesOfThread([] { return std::unique_ptr<FaceTrees>(); });
     for (int first = 0; first < count; first += kBlock) {
         const int size = std::min(kBlock, count - first);
-        parallel::forEachRange(0, size, 16, [&](int begin, int end) {
-            for (int i = begin; i < end; ++i)
-                stencilOf(faces[first + i], u[first + i], v[first + i], block[std::size_t(i)]);
+        order.resize(std::size_t(size));
+        for (int i = 0; i < size; ++i) order[std::size_t(i)] = i;
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int b) { return faces[first + a] < faces[first + b]; });
+        groups.assign(1, 0);
+        for (int i = 1; i < size; ++i)
+            if (faces[first + order[std::size_t(i)]] != faces[first + order[std::size_t(i) - 1]] ||
+                i - groups.back() == kGroup)
+                groups.push_back(i);
+        groups.push_back(size);
+        parallel::forEachRange(0, int(groups.size()) - 1, 1, [&](int begin, int end) {
+            thread_local WalkScratch baseScratch;
+            std::unique_ptr<FaceTrees>& trees = treesOfThread.local();
+            if (!trees) trees = std::make_unique<FaceTrees>(topology, o, surfaceOptions_, sharpen, baseScratch);
+            LimitPointStencil local;
+            std::vector<int> columns;
+            for (int g = begin; g < end; ++g) {
+                const int face = faces[first + order[std::size_t(groups[std::size_t(g)])]];
+                FaceTree& tree = trees->treeOf(face, columns);
+                for (int k = groups[std::size_t(g)]; k < groups[std::size_t(g) + 1]; ++k) {
+                    const int i = order[std::size_t(k)];
+                    LimitPointStencil& s = block[std::size_t(i)];
+                    if (!ch) {
+                        tree.stencil(u[first + i], v[first + i], columns, s);
+                        continue;
+                    }
+                    tree.stencil(u[first + i], v[first + i], columns, local);
+                    mergeValues(ch->valueOf, local, s);
+                }
+            }
         });
         for (int i = 0; i < size; ++i) {
             const LimitPointStencil& s = block[std::size_t(i)];
@@ -361,6 +273,117 @@ LimitStencilTable LimitSurface::tableOf(int count, const int* faces, const doubl
         }
     }
     return toFloatTable(table);
+}
+
+// N components of a located point: its leaf's rows over the control values (column j reads
+// control[sources[j] * stride]), the derivatives taken to the face's (u, v).
+template <int N>
+void combine(const FaceTree& tree, const FaceTree::Located& at, const int* sources, const float* control, int stride,
+             float* const out[3]) {
+    double p[N] = {}, s[N] = {}, t[N] = {};
+    for (int i = 0; i < at.count; ++i) {
+        const int row = at.firstRow + i;
+        for (int k = tree.rowBegin(row); k < tree.rowBegin(row + 1); ++k) {
+            const double x = tree.rowWeight(k);
+            const double a = at.wP[i] * x, b = at.wDs[i] * x, d = at.wDt[i] * x;
+            const float* src = control + std::size_t(sources[tree.rowColumn(k)]) * std::size_t(stride);
+            for (int c = 0; c < N; ++c) {
+                p[c] += a * src[c];
+                s[c] += b * src[c];
+                t[c] += d * src[c];
+            }
+        }
+    }
+    for (int c = 0; c < N; ++c) {
+        out[0][c] = float(p[c]);
+        if (out[1]) out[1][c] = float(s[c] * at.k[0][0] + t[c] * at.k[1][0]);
+        if (out[2]) out[2][c] = float(s[c] * at.k[0][1] + t[c] * at.k[1][1]);
+    }
+}
+
+// The factory's trees and the scratch they cut with, kept alive by every FaceSurface it made.
+struct FaceSurfaceFactory::Shared {
+    Shared(const Topology& base, const Options& o, const LimitSurfaceOptions& so, Sharpen sharpen)
+        : trees(base, o, so, sharpen, scratch) {}
+    WalkScratch scratch;
+    FaceTrees trees;
+};
+
+FaceSurfaceFactory::FaceSurfaceFactory(const LimitSurface& surface, int channel) : surface_(&surface) {
+    if (channel >= 0 || channel < -1) {
+        const LimitSurface::Channel& ch = surface.channel(channel);
+        valueOf_ = &ch.valueOf;
+        shared_ = std::make_shared<Shared>(ch.values, ch.options, surface.surfaceOptions_, ch.sharpen);
+    } else {
+        shared_ = std::make_shared<Shared>(*surface.base_, counterClockwise(surface.options_), surface.surfaceOptions_,
+                                           Sharpen::None);
+    }
+}
+
+FaceSurfaceFactory::~FaceSurfaceFactory() = default;
+
+int FaceSurfaceFactory::numShapes() const { return shared_->trees.numShapes(); }
+
+FaceSurface FaceSurfaceFactory::faceSurface(int face) {
+    FaceSurface out;
+    faceSurface(face, out);
+    return out;
+}
+
+void FaceSurfaceFactory::faceSurface(int face, FaceSurface& out) {
+    if (surface_->isHole(face)) throw SurfaceError("face " + std::to_string(face) + " is a hole: it has no surface");
+    if (out.shared_ != shared_) out.shared_ = shared_;
+    out.face_ = face;
+    const internal::FaceTrees::Kept& kept = shared_->trees.keptTreeOf(face);
+    out.tree_ = kept.tree;
+    out.columns_ = &kept.columns;
+    out.valueOf_ = valueOf_;
+    if (valueOf_) {
+        out.sources_.resize(kept.columns.size());
+        for (std::size_t j = 0; j < kept.columns.size(); ++j) out.sources_[j] = (*valueOf_)[std::size_t(kept.columns[j])];
+    }
+}
+
+FaceSurface::FaceSurface() = default;
+FaceSurface::~FaceSurface() = default;
+FaceSurface::FaceSurface(FaceSurface&&) noexcept = default;
+FaceSurface& FaceSurface::operator=(FaceSurface&&) noexcept = default;
+
+int FaceSurface::face() const { return face_; }
+
+const FaceParameterization& FaceSurface::parameterization() const {
+    if (!tree_) throw SurfaceError("FaceSurface: empty (FaceSurfaceFactory::faceSurface makes them)");
+    return tree_->parameterization();
+}
+
+void FaceSurface::stencil(double u, double v, LimitPointStencil& out) {
+    const FaceParameterization& p = parameterization();
+    if (!p.contains(u, v))
+        throw SurfaceError("face " + std::to_string(face()) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
+                           ") is outside its domain (" + p.describe() + ")");
+    if (!valueOf_) return tree_->stencil(u, v, *columns_, out);
+    tree_->stencil(u, v, *columns_, local_);
+    mergeValues(*valueOf_, local_, out);
+}
+
+void FaceSurface::evaluate(double u, double v, const float* control, int width, int stride, float* position,
+                           float* dPdu, float* dPdv) {
+    const FaceParameterization& p = parameterization();
+    if (!p.contains(u, v))
+        throw SurfaceError("face " + std::to_string(face()) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
+                           ") is outside its domain (" + p.describe() + ")");
+    FaceTree::Located at;
+    tree_->locate(u, v, at);
+    const int* sources = valueOf_ ? sources_.data() : columns_->data();
+    for (int c = 0; c < width; c += 4) {
+        float* const out[3] = {position + c, dPdu ? dPdu + c : nullptr, dPdv ? dPdv + c : nullptr};
+        switch (std::min(4, width - c)) {
+        case 1: combine<1>(*tree_, at, sources, control + c, stride, out); break;
+        case 2: combine<2>(*tree_, at, sources, control + c, stride, out); break;
+        case 3: combine<3>(*tree_, at, sources, control + c, stride, out); break;
+        default: combine<4>(*tree_, at, sources, control + c, stride, out); break;
+        }
+    }
 }
 
 }  // namespace v0

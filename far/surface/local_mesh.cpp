@@ -95,6 +95,23 @@ LocalMesh meshOfCut(const Topology& level, const PatchCut& cut, int face, const 
 
 }  // namespace
 
+void RowAccumulator::resize(int numColumns) {
+    sum_.assign(std::size_t(numColumns), 0.0);
+    seen_.assign(std::size_t(numColumns), 0);
+    touched_.clear();
+}
+
+void RowAccumulator::add(double weight, const SparseRow& row) {
+    for (int k = 0; k < row.size; ++k) {
+        const std::size_t j = std::size_t(row.columns[k]);
+        if (!seen_[j]) {
+            seen_[j] = 1;
+            touched_.push_back(int(j));
+        }
+        sum_[j] += weight * row.weights[k];
+    }
+}
+
 LocalMesh cutBase(const Topology& base, int face, int rings, const Options& options, WalkScratch& scratch,
                   std::vector<int>& columns, Sharpen sharpen) {
     PatchCut cut;
@@ -103,8 +120,13 @@ LocalMesh cutBase(const Topology& base, int face, int rings, const Options& opti
     const int n = int(cut.source.size());
     columns = cut.source;
     m.numColumns = n;
-    m.rows.assign(std::size_t(n) * std::size_t(n), 0.0);
-    for (int v = 0; v < n; ++v) m.rows[std::size_t(v) * n + v] = 1.0;
+    m.rowOffsets.resize(std::size_t(n) + 1);
+    m.rowColumns.resize(std::size_t(n));
+    m.rowWeights.assign(std::size_t(n), 1.0);
+    for (int v = 0; v < n; ++v) {
+        m.rowOffsets[std::size_t(v) + 1] = v + 1;
+        m.rowColumns[std::size_t(v)] = v;
+    }
     return m;
 }
 
@@ -123,16 +145,16 @@ LocalMesh refineTowards(const LocalMesh& mesh, int child, int rings, const Optio
     std::vector<std::uint8_t> wanted(std::size_t(c.numVertices), 0);
     for (int v : cut.source) wanted[v] = 1;
     const StencilTableD table = buildLevelStencils<StencilTableD>(p, num, options, nullptr, &wanted);
-    const int columns = out.numColumns = mesh.numColumns;
-    out.rows.assign(cut.source.size() * std::size_t(columns), 0.0);
+    out.numColumns = mesh.numColumns;
+    RowAccumulator sum(mesh.numColumns);
     for (std::size_t i = 0; i < cut.source.size(); ++i) {
-        double* row = out.rows.data() + i * columns;
         const int v = cut.source[i], first = table.offsets[v];
-        for (int k = first; k < first + table.sizes[v]; ++k) {
-            const double w = table.weights[k];
-            const double* parent = mesh.row(table.indices[k]);
-            for (int j = 0; j < columns; ++j) row[j] += w * parent[j];
-        }
+        for (int k = first; k < first + table.sizes[v]; ++k) sum.add(table.weights[k], mesh.row(table.indices[k]));
+        sum.take([&](int column, double weight) {
+            out.rowColumns.push_back(column);
+            out.rowWeights.push_back(weight);
+        });
+        out.rowOffsets.push_back(int(out.rowColumns.size()));
     }
 
     if (nodes) {

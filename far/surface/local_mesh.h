@@ -4,6 +4,7 @@
 // base neighbourhood's vertices.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include <quadtri/far/options.h>
@@ -15,12 +16,51 @@ namespace quadtri {
 inline namespace v0 {
 namespace internal {
 
+// A vertex's weights over the columns: its nonzero ones, by increasing column.
+struct SparseRow {
+    const int* columns;
+    const double* weights;
+    int size;
+};
+
 struct LocalMesh {
-    Topology topology;        // the kept faces, in full
-    int face = -1;            // the followed sub-face, in topology's numbering
-    int numColumns = 0;       // the base neighbourhood's vertices
-    std::vector<double> rows;  // per vertex of topology, numColumns weights
-    const double* row(int v) const { return rows.data() + std::size_t(v) * std::size_t(numColumns); }
+    Topology topology;   // the kept faces, in full
+    int face = -1;       // the followed sub-face, in topology's numbering
+    int numColumns = 0;  // the base neighbourhood's vertices
+    // Per vertex of topology its row: rowColumns and rowWeights [rowOffsets[v], rowOffsets[v + 1]).
+    // Sparse: a vertex deep in the refinement reads a few dozen of a cut's hundreds of columns.
+    std::vector<int> rowOffsets{0}, rowColumns;
+    std::vector<double> rowWeights;
+
+    SparseRow row(int v) const {
+        const int first = rowOffsets[std::size_t(v)];
+        return {rowColumns.data() + first, rowWeights.data() + first, rowOffsets[std::size_t(v) + 1] - first};
+    }
+};
+
+// Sums of weighted rows over numColumns columns, column by column in the order the rows are
+// added (the arithmetic of a dense sum, without its zeros).
+class RowAccumulator {
+public:
+    explicit RowAccumulator(int numColumns = 0) { resize(numColumns); }
+    void resize(int numColumns);
+    void add(double weight, const SparseRow& row);
+    // The sum's nonzero columns by increasing column, as (column, weight) to `emit`; then empty.
+    template <class Emit>
+    void take(Emit&& emit) {
+        std::sort(touched_.begin(), touched_.end());
+        for (int j : touched_) {
+            if (sum_[std::size_t(j)] != 0.0) emit(j, sum_[std::size_t(j)]);
+            sum_[std::size_t(j)] = 0.0;
+            seen_[std::size_t(j)] = 0;
+        }
+        touched_.clear();
+    }
+
+private:
+    std::vector<double> sum_;
+    std::vector<unsigned char> seen_;
+    std::vector<int> touched_;
 };
 
 // Sharpness a face-varying channel's value mesh takes at every level, beyond what refinement

@@ -24,7 +24,7 @@ void cubic(double x, double w[4], double d[4]) {
 
 // Stam's basis times 12, one row per point, over the monomials 1, s, t, s², st, t², s³, s²t,
 // st², t³, s⁴, s³t, s²t², st³, t⁴.
-constexpr int kBoxSpline[12][15] = {
+constexpr double kBoxSpline[12][15] = {
     {1, -2, -4, 0, 6, 6, 2, 0, -6, -4, -1, -2, 0, 2, 1},
     {1, 2, -2, 0, -6, 0, -4, 0, 6, 2, 2, 4, 0, -2, -1},
     {0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -1, -2, 0, 0, 0},
@@ -39,6 +39,7 @@ constexpr int kBoxSpline[12][15] = {
     {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1},
 };
 constexpr int kPowerS[15] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0};
+constexpr int kPowerT[15] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4};
 
 // The tensor product of two n-point univariate bases (values l, derivatives d), point (i, j) at
 // [n j + i].
@@ -52,12 +53,6 @@ void tensorProduct(int n, const double* ls, const double* ds, const double* lt, 
         }
 }
 
-double power(double x, int n) {
-    double p = 1.0;
-    for (int i = 0; i < n; ++i) p *= x;
-    return p;
-}
-
 }  // namespace
 
 void bSplineWeights(double s, double t, double wP[16], double wDs[16], double wDt[16]) {
@@ -68,12 +63,13 @@ void bSplineWeights(double s, double t, double wP[16], double wDs[16], double wD
 }
 
 void boxSplineWeights(double s, double t, double wP[12], double wDs[12], double wDt[12]) {
+    const double ps[5] = {1, s, s * s, s * s * s, s * s * s * s}, pt[5] = {1, t, t * t, t * t * t, t * t * t * t};
     double m[15], ms[15], mt[15];
     for (int k = 0; k < 15; ++k) {
-        const int a = kPowerS[k], b = (k == 0 ? 0 : k < 3 ? 1 : k < 6 ? 2 : k < 10 ? 3 : 4) - a;
-        m[k] = power(s, a) * power(t, b);
-        ms[k] = a > 0 ? a * power(s, a - 1) * power(t, b) : 0.0;
-        mt[k] = b > 0 ? b * power(s, a) * power(t, b - 1) : 0.0;
+        const int a = kPowerS[k], b = kPowerT[k];
+        m[k] = ps[a] * pt[b];
+        ms[k] = a > 0 ? a * ps[a - 1] * pt[b] : 0.0;
+        mt[k] = b > 0 ? b * ps[a] * pt[b - 1] : 0.0;
     }
     for (int i = 0; i < 12; ++i) {
         double p = 0, d = 0, e = 0;

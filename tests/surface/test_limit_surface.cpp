@@ -117,8 +117,10 @@ double worstLocalVertex(const std::string& mesh, Scheme scheme, int face, const 
         for (int g : m.topology.facesOfVertex(v))
             for (int x : m.topology.verticesOfFace(g)) {
                 Vec3 p{0, 0, 0};
-                for (int j = 0; j < m.numColumns; ++j)
-                    for (int c = 0; c < 3; ++c) p[c] += m.row(x)[j] * r.positions[0][3 * columns[j] + c];
+                const SparseRow row = m.row(x);
+                for (int k = 0; k < row.size; ++k)
+                    for (int c = 0; c < 3; ++c)
+                        p[c] += row.weights[k] * r.positions[0][3 * std::size_t(columns[std::size_t(row.columns[k])]) + c];
                 double nearest = 1e300;
                 for (std::size_t k = 0; k < level.size() / 3; ++k) nearest = std::min(nearest, distance(p, vec3(&level[3 * k])));
                 worst = std::max(worst, nearest / diagonal);
@@ -321,6 +323,48 @@ TEST(LimitSurface, RefusesPointsItHasNoSurfaceFor) {
     } catch (const SurfaceError& e) {
         EXPECT_NE(std::string(e.what()).find("face " + std::to_string(hole) + " is a hole"), std::string::npos) << e.what();
     }
+}
+
+// Built from the mesh's arrays without a Refiner, the surface is the Refiner's: the same stencils,
+// UVs included, and the Refiner's errors for a bad mesh.
+TEST(LimitSurface, FromTheMeshArraysIsTheRefinersSurface) {
+    for (const char* mesh : {"uv/cylinder_capped_creased_uv.obj", "osd/catmark_hole_test1.obj"}) {
+        const io::ObjMesh obj = io::readObj(meshPath(mesh));
+        FVarChannel uvChannel;
+        const TopologyDescriptor desc = obj.descriptor(uvChannel);
+        for (Scheme scheme : {Scheme::SchaeferWarren, Scheme::CatmullClark}) {
+            Options options;
+            options.scheme = scheme;
+            options = obj.applyTags(options);
+            const Refiner refiner(desc, options);
+            const LimitSurface viaRefiner(refiner), direct(desc, options);
+            ASSERT_EQ(direct.numFaces(), viaRefiner.numFaces());
+            ASSERT_EQ(direct.numFVarChannels(), viaRefiner.numFVarChannels());
+            std::mt19937 random(5);
+            LimitPointStencil a, b;
+            for (int f = 0; f < direct.numFaces(); f += 3) {
+                ASSERT_EQ(direct.isHole(f), viaRefiner.isHole(f));
+                if (direct.isHole(f)) continue;
+                const auto [u, v] = randomPointOf(direct.parameterization(f), f, random);
+                direct.stencil(f, u, v, a);
+                viaRefiner.stencil(f, u, v, b);
+                ASSERT_TRUE(a.indices == b.indices && a.position == b.position && a.du == b.du && a.dv == b.dv)
+                    << mesh << " face " << f;
+                for (int c = 0; c < direct.numFVarChannels(); ++c) {
+                    direct.fvarStencil(c, f, u, v, a);
+                    viaRefiner.fvarStencil(c, f, u, v, b);
+                    ASSERT_TRUE(a.indices == b.indices && a.position == b.position) << mesh << " UVs, face " << f;
+                }
+            }
+        }
+    }
+    const int sizes[] = {4}, verts[] = {0, 1, 2, 7};
+    TopologyDescriptor bad;
+    bad.numVertices = 4;
+    bad.numFaces = 1;
+    bad.numVertsPerFace = sizes;
+    bad.faceVertIndices = verts;
+    EXPECT_THROW(LimitSurface(bad, Options{}), TopologyError);
 }
 
 TEST(LimitSurface, StencilsArePartitionsOfUnityWithDerivativesSummingToZero) {

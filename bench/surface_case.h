@@ -1,0 +1,69 @@
+// One surface case on quadtri's side: the limit position, du, dv and unit normal at random (u, v)
+// on every face of a cage, by FaceSurfaceFactory and FaceSurface::evaluate, serial, grouped by
+// face; the factory's cost (LimitSurface from the mesh's arrays + FaceSurfaceFactory) beside it. OpenSubdiv's ways are
+// bench/opensubdiv/osd_surface_case.h.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench/figures.h"
+#include "bench/meshes/torus.h"
+#include <quadtri/far/options.h>
+
+namespace quadtri {
+inline namespace v0 {
+class LimitSurface;
+class FaceSurfaceFactory;
+}  // namespace v0
+}  // namespace quadtri
+
+namespace quadtri::bench {
+
+// A cage with its creases, and the options quadtri runs it with (its scheme and the file's tags).
+struct SurfaceCage {
+    ControlMesh mesh;
+    std::vector<int> creasePairs;  // 2 vertices per crease
+    std::vector<float> creaseSharpness;
+    Options options;
+
+    TopologyDescriptor descriptor() const;  // the mesh's, with the creases
+};
+
+// The points every way evaluates: per point its face and (u, v) on it (OpenSubdiv's Bfr
+// parameterization), grouped by face.
+struct SurfacePoints {
+    std::vector<int> faces;
+    std::vector<double> uv;
+    int size() const { return int(faces.size()); }
+};
+
+class SurfaceCase {
+public:
+    // `pointsPerFace` random points on each face (a fixed seed: the same points every run).
+    SurfaceCase(const SurfaceCage& cage, int pointsPerFace);
+    ~SurfaceCase();
+
+    // Builds the surface, makes the points and evaluates them once.
+    void prepare();
+
+    const SurfacePoints& points() const { return points_; }
+    const std::vector<float>& positions() const { return position_; }  // 3 floats a point, after prepare()
+    const std::vector<float>& normals() const { return normal_; }
+
+    SurfaceWay measure(int reps);
+
+private:
+    // Every point through `factory` into position_ and normal_.
+    void evaluate(FaceSurfaceFactory& factory);
+
+    const SurfaceCage& cage_;
+    int pointsPerFace_;
+    std::unique_ptr<LimitSurface> surface_;
+    std::unique_ptr<FaceSurfaceFactory> warm_;  // has seen every point
+    SurfacePoints points_;
+    std::vector<float> position_, normal_;
+};
+
+}  // namespace quadtri::bench

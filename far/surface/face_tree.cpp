@@ -1,0 +1,322 @@
+// FaceTree (far/surface/face_tree.h): a point walks down from the face to the leaf that holds it,
+// refining the neighbourhood of each sub-face it enters for the first time.
+#include "far/surface/face_tree.h"
+
+#include <algorithm>
+
+#include "far/limit/limit_mask.h"
+#include "far/limit/limit_ring.h"
+#include "far/limit/limit_table.h"
+#include "far/schemes/scheme.h"
+#include "far/surface/patch_basis.h"
+#include "far/surface/regular_patch.h"
+
+namespace quadtri {
+inline namespace v0 {
+namespace internal {
+
+namespace {
+
+// The point in the followed sub-face's own (s, t), and d(s, t)/d(u, v) back to the base face.
+struct Where {
+    double s = 0, t = 0;
+    double k[2][2] = {{1, 0}, {0, 1}};  // k[0]: ds/du, ds/dv; k[1]: dt/du, dt/dv
+
+    // (s, t) <- a (s, t) + b, kept inside the domain against rounding.
+    void map(const double a[2][2], double b0, double b1, bool triangle) {
+        const double s1 = a[0][0] * s + a[0][1] * t + b0, t1 = a[1][0] * s + a[1][1] * t + b1;
+        s = std::clamp(s1, 0.0, 1.0);
+        t = std::clamp(t1, 0.0, 1.0);
+        if (triangle && s + t > 1) {
+            const double over = s + t;
+            s /= over;
+            t /= over;
+        }
+        double k1[2][2];
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) k1[i][j] = a[i][0] * k[0][j] + a[i][1] * k[1][j];
+        std::copy(&k1[0][0], &k1[0][0] + 4, &k[0][0]);
+    }
+};
+
+// The child of a quad (or triangle split in four) that holds the point, the point moved into it
+// (children as refine_topology.cpp numbers them: corner i's first, a triangle's middle last).
+int descend(bool quad, Where& w) {
+    if (quad) {
+        static constexpr double kA[4][2][2] = {
+            {{2, 0}, {0, 2}}, {{0, 2}, {-2, 0}}, {{-2, 0}, {0, -2}}, {{0, -2}, {2, 0}}};
+        static constexpr double kB[4][2] = {{0, 0}, {0, 2}, {2, 2}, {2, 0}};
+        const int child = w.s < 0.5 ? (w.t < 0.5 ? 0 : 3) : (w.t < 0.5 ? 1 : 2);
+        w.map(kA[child], kB[child][0], kB[child][1], false);
+        return child;
+    }
+    static constexpr double kA[4][2][2] = {
+        {{2, 0}, {0, 2}}, {{0, 2}, {-2, -2}}, {{-2, -2}, {2, 0}}, {{2, 2}, {-2, 0}}};
+    static constexpr double kB[4][2] = {{0, 0}, {0, 2}, {2, 0}, {-1, 1}};
+    const int child = w.s + w.t <= 0.5 ? 0 : w.s >= 0.5 ? 1 : w.t >= 0.5 ? 2 : 3;
+    w.map(kA[child], kB[child][0], kB[child][1], true);
+    return child;
+}
+
+// The sub-face of an n-gon's (u, v), checked to hold it, and the point in it.
+int enterSubFace(const FaceParameterization& p, double u, double v, Where& w) {
+    const int i = p.subFaceAt(u, v);
+    static constexpr double kTwice[2][2] = {{2, 0}, {0, 2}};
+    w.s = u;
+    w.t = v;
+    w.map(kTwice, -2.0 * (i % p.gridWidth), -2.0 * (i / p.gridWidth), false);
+    return i;
+}
+
+}  // namespace
+
+namespace {
+
+FaceTree::Leaf leafOf(PatchKind kind) {
+    switch (kind) {
+    case PatchKind::BSpline: return FaceTree::Leaf::BSpline;
+    case PatchKind::BoxSpline: return FaceTree::Leaf::BoxSpline;
+    case PatchKind::Bilinear: return FaceTree::Leaf::Bilinear;
+    case PatchKind::Linear: return FaceTree::Leaf::Linear;
+    default: return FaceTree::Leaf::None;
+    }
+}
+
+}  // namespace
+
+FaceTree::FaceTree(Leaf kind, const FaceParameterization& param) : param_(param) {
+    static constexpr int kPoints[] = {0, 16, 12, 4, 3};
+    numColumns_ = kPoints[int(kind)];
+    Node root;
+    root.classified = true;
+    root.leaf = kind;
+    root.quad = kind == Leaf::BSpline || kind == Leaf::Bilinear;
+    nodes_.push_back(std::move(root));
+    for (int i = 0; i < numColumns_; ++i) {
+        rowColumns_.push_back(i);
+        rowWeights_.push_back(1.0);
+        rowOffsets_.push_back(i + 1);
+    }
+    p_.assign(std::size_t(numColumns_), 0.0);
+    ds_ = dt_ = p_;
+}
+
+FaceTree::FaceTree(LocalMesh root, const Options& options, const LimitSurfaceOptions& surfaceOptions,
+                   Sharpen sharpen, const FaceParameterization& param)
+    : options_(options), surfaceOptions_(surfaceOptions), sharpen_(sharpen), param_(param) {
+    const SchemeRules& rules = rulesOf(options.scheme);
+    rings_ = surfaceOptions.rings > 0 ? surfaceOptions.rings : rules.surfaceRings();
+    linear_ = sharpen == Sharpen::All && rules.surfacePatches().sharpIsLinear;
+    numColumns_ = root.numColumns;
+    Node node;
+    node.mesh = std::make_unique<LocalMesh>(std::move(root));
+    nodes_.push_back(std::move(node));
+    p_.assign(std::size_t(numColumns_), 0.0);
+    ds_ = dt_ = p_;
+    sum_.resize(numColumns_);
+}
+
+FaceTree::~FaceTree() = default;
+
+int FaceTree::child(int node, int which) {
+    int& slot = children_[std::size_t(nodes_[std::size_t(node)].firstChild + which)];
+    if (slot >= 0) return slot;
+    Node made;
+    made.mesh = std::make_unique<LocalMesh>(
+        refineTowards(*nodes_[std::size_t(node)].mesh, which, rings_, options_, scratch_, nullptr, sharpen_));
+    const int id = int(nodes_.size());
+    children_[std::size_t(nodes_[std::size_t(node)].firstChild + which)] = id;
+    nodes_.push_back(std::move(made));
+    Node& parent = nodes_[std::size_t(node)];
+    if (++parent.numBuilt == parent.numChildren) parent.mesh.reset();
+    return id;
+}
+
+void FaceTree::classify(int id, int depth) {
+    if (nodes_[std::size_t(id)].classified) return;
+    Node& node = nodes_[std::size_t(id)];
+    const LocalMesh& mesh = *node.mesh;
+    node.classified = true;
+    node.quad = mesh.topology.faceSize(mesh.face) == 4;
+    node.firstRow = int(rowOffsets_.size()) - 1;
+
+    PatchKind kind;
+    if (linear_) {
+        // Under Sharpen::All a face is its corners' bilinear (linear) patch.
+        const IndexSpan corners = mesh.topology.verticesOfFace(mesh.face);
+        points_.assign(corners.begin(), corners.end());
+        kind = corners.size() == 4 ? PatchKind::Bilinear : PatchKind::Linear;
+    } else {
+        kind = regularPatch(mesh.topology, mesh.face, options_, points_);
+    }
+    if (kind != PatchKind::None) {
+        node.leaf = leafOf(kind);
+        for (int p : points_) {
+            const SparseRow row = mesh.row(p);
+            rowColumns_.insert(rowColumns_.end(), row.columns, row.columns + row.size);
+            rowWeights_.insert(rowWeights_.end(), row.weights, row.weights + row.size);
+            rowOffsets_.push_back(int(rowColumns_.size()));
+        }
+    } else if (depth >= surfaceOptions_.maxDepth) {
+        // The quadratic through the exact limit points of the sub-face's next level.
+        const SchemeRules& rules = rulesOf(options_.scheme);
+        const LocalMesh next = refineTowards(mesh, 0, rings_, options_, scratch_, &limitNodes_, sharpen_);
+        VertexRing ring;
+        LimitMask limit;
+        LimitMaskCache cache;
+        for (int vertex : limitNodes_) {
+            orderVertexRing(next.topology, vertex, -1, ring);
+            limit.clear();
+            rules.limitMask(LimitVertex{next.topology, options_, ring, limitRule(next.topology, ring)}, cache, limit);
+            for (int k = 0; k < limit.size(); ++k)
+                sum_.add(limit.position[std::size_t(k)], next.row(limit.indices[std::size_t(k)]));
+            sum_.take([&](int column, double weight) {
+                rowColumns_.push_back(column);
+                rowWeights_.push_back(weight);
+            });
+            rowOffsets_.push_back(int(rowColumns_.size()));
+        }
+        node.leaf = node.quad ? Leaf::QuadraticQuad : Leaf::QuadraticTriangle;
+    } else {
+        node.numChildren = 4;
+        node.firstChild = int(children_.size());
+        children_.insert(children_.end(), 4, -1);
+        return;
+    }
+    node.mesh.reset();
+}
+
+void FaceTree::locate(double u, double v, Located& out) {
+    Where w;
+    w.s = u;
+    w.t = v;
+    int node = 0, depth = 0;
+    if (param_.type == FaceParameterization::Type::QuadSubFaces) {
+        Node& root = nodes_[0];
+        if (root.numChildren == 0) {
+            root.classified = true;
+            root.numChildren = param_.faceSize;
+            root.firstChild = int(children_.size());
+            children_.insert(children_.end(), std::size_t(param_.faceSize), -1);
+        }
+        node = child(0, enterSubFace(param_, u, v, w));
+        depth = 1;
+    }
+    for (;; ++depth) {
+        classify(node, depth);
+        if (nodes_[std::size_t(node)].leaf != Leaf::None) break;
+        node = child(node, descend(nodes_[std::size_t(node)].quad, w));
+    }
+
+    const Node& leaf = nodes_[std::size_t(node)];
+    out.firstRow = leaf.firstRow;
+    double* const p = out.wP;
+    double* const ds = out.wDs;
+    double* const dt = out.wDt;
+    switch (leaf.leaf) {
+    case Leaf::BSpline: bSplineWeights(w.s, w.t, p, ds, dt), out.count = 16; break;
+    case Leaf::BoxSpline: boxSplineWeights(w.s, w.t, p, ds, dt), out.count = 12; break;
+    case Leaf::Bilinear: bilinearWeights(w.s, w.t, p, ds, dt), out.count = 4; break;
+    case Leaf::Linear: linearWeights(w.s, w.t, p, ds, dt), out.count = 3; break;
+    case Leaf::QuadraticQuad: quadraticQuadWeights(w.s, w.t, p, ds, dt), out.count = 9; break;
+    default: quadraticTriangleWeights(w.s, w.t, p, ds, dt), out.count = 6; break;
+    }
+    std::copy(&w.k[0][0], &w.k[0][0] + 4, &out.k[0][0]);
+}
+
+void FaceTree::stencil(double u, double v, const std::vector<int>& columns, LimitPointStencil& out) {
+    Located at;
+    locate(u, v, at);
+    for (int i = 0; i < at.count; ++i) {
+        const int row = at.firstRow + i;
+        for (int k = rowOffsets_[std::size_t(row)]; k < rowOffsets_[std::size_t(row) + 1]; ++k) {
+            const std::size_t j = std::size_t(rowColumns_[std::size_t(k)]);
+            const double x = rowWeights_[std::size_t(k)];
+            p_[j] += at.wP[i] * x;
+            ds_[j] += at.wDs[i] * x;
+            dt_[j] += at.wDt[i] * x;
+        }
+    }
+
+    // Derivatives back to (u, v); the accumulators left zero for the next point.
+    out.indices.clear();
+    out.position.clear();
+    out.du.clear();
+    out.dv.clear();
+    for (std::size_t j = 0; j < std::size_t(numColumns_); ++j) {
+        if (p_[j] == 0.0 && ds_[j] == 0.0 && dt_[j] == 0.0) continue;
+        out.indices.push_back(columns[j]);
+        out.position.push_back(p_[j]);
+        out.du.push_back(ds_[j] * at.k[0][0] + dt_[j] * at.k[1][0]);
+        out.dv.push_back(ds_[j] * at.k[0][1] + dt_[j] * at.k[1][1]);
+        p_[j] = ds_[j] = dt_[j] = 0.0;
+    }
+}
+
+FaceTrees::FaceTrees(const Topology& base, const Options& options, const LimitSurfaceOptions& surfaceOptions,
+                     Sharpen sharpen, WalkScratch& baseScratch)
+    : base_(base), options_(options), surfaceOptions_(surfaceOptions), sharpen_(sharpen), scratch_(baseScratch) {
+    const SchemeRules& rules = rulesOf(options.scheme);
+    rings_ = surfaceOptions.rings > 0 ? surfaceOptions.rings : rules.surfaceRings();
+    linear_ = sharpen == Sharpen::All && rules.surfacePatches().sharpIsLinear;
+}
+
+FaceTrees::~FaceTrees() = default;
+
+namespace {
+
+template <class T>
+void append(std::string& key, const std::vector<T>& items) {
+    const std::size_t n = items.size();
+    key.append(reinterpret_cast<const char*>(&n), sizeof n);
+    key.append(reinterpret_cast<const char*>(items.data()), n * sizeof(T));
+}
+
+}  // namespace
+
+FaceTree& FaceTrees::treeOf(int face, std::vector<int>& columns) {
+    const FaceParameterization param = FaceParameterization::of(options_.scheme, base_.faceSize(face));
+    if (param.type != FaceParameterization::Type::QuadSubFaces) {
+        // A regular face (most of a mesh) is its own patch: no neighbourhood to cut.
+        FaceTree::Leaf kind = FaceTree::Leaf::None;
+        if (linear_) {
+            const IndexSpan corners = base_.verticesOfFace(face);
+            columns.assign(corners.begin(), corners.end());
+            kind = corners.size() == 4 ? FaceTree::Leaf::Bilinear : FaceTree::Leaf::Linear;
+            for (std::size_t i = 0; i < columns.size(); ++i)
+                for (std::size_t j = 0; j < i; ++j)
+                    if (columns[i] == columns[j]) kind = FaceTree::Leaf::None;
+        } else {
+            kind = leafOf(regularPatch(base_, face, options_, columns));
+        }
+        if (kind != FaceTree::Leaf::None) {
+            std::unique_ptr<FaceTree>& tree = regular_[int(kind) - 1];
+            if (!tree) tree = std::make_unique<FaceTree>(kind, param);
+            return *tree;
+        }
+    }
+    LocalMesh cut = cutBase(base_, face, rings_, options_, scratch_, columns, sharpen_);
+    const Topology& t = cut.topology;
+    key_.assign(reinterpret_cast<const char*>(&cut.face), sizeof cut.face);
+    append(key_, t.faceOffsets);
+    append(key_, t.faceVerts);
+    append(key_, t.faceEdges);
+    append(key_, t.edgeVerts);
+    append(key_, t.edgeSharpness);
+    append(key_, t.vertSharpness);
+    append(key_, t.faceHole);
+    std::unique_ptr<FaceTree>& tree = trees_[key_];
+    if (!tree) tree = std::make_unique<FaceTree>(std::move(cut), options_, surfaceOptions_, sharpen_, param);
+    return *tree;
+}
+
+const FaceTrees::Kept& FaceTrees::keptTreeOf(int face) {
+    if (kept_.empty()) kept_.resize(std::size_t(base_.numFaces()));
+    Kept& k = kept_[std::size_t(face)];
+    if (!k.tree) k.tree = &treeOf(face, k.columns);
+    return k;
+}
+
+}  // namespace internal
+}  // namespace v0
+}  // namespace quadtri

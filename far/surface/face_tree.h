@@ -1,0 +1,127 @@
+// One base face's surface as a tree of sub-faces, grown as points ask for it (docs/surface.md,
+// "Faces' trees"): each node is a sub-face of the face's local refinement; a node that is a
+// regular patch, or lies at the maximum depth, is a leaf whose points are kept as weights over
+// the base neighbourhood, so that every later point in it costs one basis evaluation.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <quadtri/far/limit_surface.h>
+#include <quadtri/far/options.h>
+#include <quadtri/far/topology.h>
+#include "far/limit/limit_scratch.h"
+#include "far/surface/local_mesh.h"
+#include "far/surface/regular_patch.h"
+
+namespace quadtri {
+inline namespace v0 {
+namespace internal {
+
+// The tree of one neighbourhood shape, over columns of its own: the cut's vertices, or a regular
+// face's points in patch order. A leaf's points are rows of weights over the columns.
+class FaceTree {
+public:
+    enum class Leaf : signed char { None, BSpline, BoxSpline, Bilinear, Linear, QuadraticQuad, QuadraticTriangle };
+
+    // A regular face: one leaf over its points.
+    FaceTree(Leaf kind, const FaceParameterization& param);
+    // Any other face: the cut around it, refined as points ask.
+    FaceTree(LocalMesh root, const Options& options, const LimitSurfaceOptions& surfaceOptions, Sharpen sharpen,
+             const FaceParameterization& param);
+    ~FaceTree();
+
+    const FaceParameterization& parameterization() const { return param_; }
+    int numColumns() const { return numColumns_; }
+
+    // Where (u, v) (checked by the caller to lie in the face's domain) falls: its leaf's rows
+    // (points) and their basis weights; d(s, t)/d(u, v) takes the leaf's derivatives to the face's.
+    struct Located {
+        int firstRow = 0, count = 0;
+        double wP[16], wDs[16], wDt[16];
+        double k[2][2];  // k[0]: ds/du, ds/dv; k[1]: dt/du, dt/dv
+    };
+    void locate(double u, double v, Located& out);
+
+    // The weights of (u, v) over columns[j] for the tree's column j, derivatives along the face's
+    // u and v.
+    void stencil(double u, double v, const std::vector<int>& columns, LimitPointStencil& out);
+
+    // Row r's weights over the columns: columns rowColumn(k), weights rowWeight(k) for k in
+    // [rowBegin(r), rowBegin(r + 1)).
+    int rowBegin(int r) const { return rowOffsets_[std::size_t(r)]; }
+    int rowColumn(int k) const { return rowColumns_[std::size_t(k)]; }
+    double rowWeight(int k) const { return rowWeights_[std::size_t(k)]; }
+
+private:
+    struct Node {
+        std::unique_ptr<LocalMesh> mesh;  // kept until the node is a leaf or all its children exist
+        int firstChild = -1;              // into children_, numChildren slots
+        int numChildren = 0, numBuilt = 0;
+        int firstRow = 0;                 // a leaf's points: rows firstRow .. firstRow + points
+        Leaf leaf = Leaf::None;
+        bool classified = false;
+        bool quad = true;
+    };
+
+    int child(int node, int which);
+    void classify(int node, int depth);
+
+    Options options_;
+    LimitSurfaceOptions surfaceOptions_;
+    Sharpen sharpen_ = Sharpen::None;
+    int rings_ = 0;
+    bool linear_ = false;
+    FaceParameterization param_;
+    int numColumns_ = 0;
+    std::vector<Node> nodes_;
+    std::vector<int> children_;
+    std::vector<int> rowOffsets_{0}, rowColumns_;
+    std::vector<double> rowWeights_;
+    WalkScratch scratch_;
+    std::vector<double> p_, ds_, dt_;  // per column
+    RowAccumulator sum_;
+    std::vector<int> points_, limitNodes_;
+};
+
+// The trees of a topology's faces, one per neighbourhood shape: faces whose cuts have the same
+// topology and sharpness share one (a tree depends on nothing else), as Bfr's factory caches its
+// irregular patches. One thread at a time, with the trees it gave.
+class FaceTrees {
+public:
+    // `baseScratch`, sized for `base` (kept by the caller: sizing it is linear in the mesh), is
+    // used by every treeOf.
+    FaceTrees(const Topology& base, const Options& options, const LimitSurfaceOptions& surfaceOptions, Sharpen sharpen,
+              WalkScratch& baseScratch);
+    ~FaceTrees();
+
+    // Face f's tree, and into `columns` the base vertex of each of its columns.
+    FaceTree& treeOf(int face, std::vector<int>& columns);
+    // The same, kept for the next call with this face (a FaceSurfaceFactory meets a face again
+    // each time its points are asked for): the columns stay where they are while this lives.
+    struct Kept {
+        FaceTree* tree = nullptr;
+        std::vector<int> columns;
+    };
+    const Kept& keptTreeOf(int face);
+    int numShapes() const { return int(trees_.size()); }
+
+private:
+    const Topology& base_;
+    Options options_;
+    LimitSurfaceOptions surfaceOptions_;
+    Sharpen sharpen_;
+    int rings_;
+    bool linear_;
+    std::unordered_map<std::string, std::unique_ptr<FaceTree>> trees_;
+    std::unique_ptr<FaceTree> regular_[4];  // by Leaf - 1: BSpline, BoxSpline, Bilinear, Linear
+    WalkScratch& scratch_;
+    std::string key_;
+    std::vector<Kept> kept_;  // per face, filled by keptTreeOf
+};
+
+}  // namespace internal
+}  // namespace v0
+}  // namespace quadtri

@@ -1,0 +1,181 @@
+// FaceSurface (far/limit_surface.h): a face's tree grown by many points in any order gives each
+// point exactly the stencil LimitSurface gives it alone, for every mesh and scheme (and again when
+// the factory meets the face a second time); evaluate
+// applies it; face-varying surfaces the same; and the errors.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <quadtri/far/limit_surface.h>
+#include "tests/sanitized.h"
+#include "tests/surface/surface_support.h"
+#include "tests/test_support.h"
+
+namespace quadtri::test {
+namespace {
+
+// Points of face f: random ones, its corners and points on its edges (where the tree goes
+// deepest next to a boundary, a crease or the seam), in a shuffled order.
+std::vector<std::pair<double, double>> pointsOf(const FaceParameterization& p, std::mt19937& random) {
+    std::vector<std::pair<double, double>> points;
+    for (int k = 0; k < 3 * p.faceSize; ++k) points.push_back(randomPointOf(p, k, random));
+    for (int i = 0; i < p.faceSize; ++i) {
+        double u, v;
+        p.cornerCoord(i, u, v);
+        points.emplace_back(u, v);
+        for (double t : {0.25, 0.6}) {
+            p.edgeCoord(i, t, u, v);
+            points.emplace_back(u, v);
+        }
+    }
+    std::shuffle(points.begin(), points.end(), random);
+    return points;
+}
+
+bool sameStencil(const LimitPointStencil& a, const LimitPointStencil& b) {
+    return a.indices == b.indices && a.position == b.position && a.du == b.du && a.dv == b.dv;
+}
+
+class FaceSurfaceAgreement : public testing::TestWithParam<std::tuple<std::string, Scheme>> {};
+
+TEST_P(FaceSurfaceAgreement, GivesEachPointTheStencilItHasAlone) {
+    const auto& [mesh, scheme] = GetParam();
+    Options options;
+    options.scheme = scheme;
+    RefinedMesh r;
+    try {
+        r = refineMesh(mesh, 0, options);
+    } catch (const TopologyError& e) {
+        GTEST_SKIP() << e.what();  // a mesh the scheme refuses (loop on quads)
+    }
+    const LimitSurface surface(*r.refiner);
+    const std::vector<float>& control = r.positions[0];
+    std::mt19937 random(7);
+    const int step = std::max(1, surface.numFaces() / (kSanitized ? 4 : 24));
+    int points = 0;
+    FaceSurfaceFactory factory(surface);
+    for (int f = 0; f < surface.numFaces(); f += step) {
+        if (surface.isHole(f)) continue;
+        FaceSurface face = factory.faceSurface(f);
+        ASSERT_EQ(face.face(), f);
+        LimitPointStencil alone, grown;
+        for (const auto& [u, v] : pointsOf(surface.parameterization(f), random)) {
+            surface.stencil(f, u, v, alone);
+            face.stencil(u, v, grown);
+            ASSERT_TRUE(sameStencil(alone, grown)) << mesh << " face " << f << " (" << u << ", " << v << ")";
+            float p[3], du[3], dv[3], q[3], qu[3], qv[3];
+            surface.evaluate(f, u, v, control.data(), 3, 3, p, du, dv);
+            face.evaluate(u, v, control.data(), 3, 3, q, qu, qv);
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_NEAR(q[c], p[c], 1e-5 * (1 + std::abs(p[c]))) << mesh << " face " << f;
+                EXPECT_NEAR(qu[c], du[c], 1e-4 * (1 + std::abs(du[c]))) << mesh << " face " << f;
+                EXPECT_NEAR(qv[c], dv[c], 1e-4 * (1 + std::abs(dv[c]))) << mesh << " face " << f;
+            }
+            ++points;
+        }
+    }
+    EXPECT_GT(points, 0);
+    // The same faces again into one reused FaceSurface: what the factory kept of each face (its
+    // tree and neighbourhood) gives the same stencils.
+    FaceSurface reused;
+    for (int f = 0; f < surface.numFaces(); f += step) {
+        if (surface.isHole(f)) continue;
+        factory.faceSurface(f, reused);
+        ASSERT_EQ(reused.face(), f);
+        LimitPointStencil alone, again;
+        for (const auto& [u, v] : pointsOf(surface.parameterization(f), random)) {
+            surface.stencil(f, u, v, alone);
+            reused.stencil(u, v, again);
+            ASSERT_TRUE(sameStencil(alone, again)) << mesh << " face " << f << " again (" << u << ", " << v << ")";
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllMeshes, FaceSurfaceAgreement,
+                         testing::Combine(testing::ValuesIn(allMeshes()), testing::ValuesIn(allSchemes())),
+                         [](const auto& info) {
+                             return testNameOf(std::get<0>(info.param) + "_" + toString(std::get<1>(info.param)));
+                         });
+
+TEST(FaceSurface, FaceVaryingValuesAreThoseOfTheLimitSurface) {
+    for (FVarLinearInterpolation fvar : {FVarLinearInterpolation::None, FVarLinearInterpolation::CornersOnly,
+                                         FVarLinearInterpolation::Boundaries, FVarLinearInterpolation::All}) {
+        for (const char* mesh : {"uv/mixed_torus_uv.obj", "uv/cylinder_capped_creased_uv.obj"}) {
+            Options options;
+            options.fvarLinearInterpolation = fvar;
+            const io::ObjMesh obj = io::readObj(meshPath(mesh));
+            FVarChannel uvChannel;
+            const Refiner refiner(obj.descriptor(uvChannel), obj.applyTags(options));
+            const LimitSurface surface(refiner);
+            ASSERT_EQ(surface.numFVarChannels(), 1);
+            std::mt19937 random(3);
+            const int step = kSanitized ? 9 : 2;
+            FaceSurfaceFactory factory(surface, 0);
+            for (int f = 0; f < surface.numFaces(); f += step) {
+                FaceSurface face = factory.faceSurface(f);
+                LimitPointStencil alone, grown;
+                for (const auto& [u, v] : pointsOf(surface.parameterization(f), random)) {
+                    surface.fvarStencil(0, f, u, v, alone);
+                    face.stencil(u, v, grown);
+                    ASSERT_TRUE(sameStencil(alone, grown)) << mesh << " face " << f;
+                    float a[2], b[2];
+                    surface.evaluateFVar(0, f, u, v, obj.uvs.data(), 2, 2, a);
+                    face.evaluate(u, v, obj.uvs.data(), 2, 2, b);
+                    EXPECT_NEAR(a[0], b[0], 1e-6) << mesh << " face " << f;
+                    EXPECT_NEAR(a[1], b[1], 1e-6) << mesh << " face " << f;
+                }
+            }
+        }
+    }
+}
+
+TEST(FaceSurface, EvaluatesWideDataComponentByComponent) {
+    const RefinedMesh r = refineMesh("mixed/mixed_torus.obj", 0);
+    const LimitSurface surface(*r.refiner);
+    // 7 floats per vertex, 9 apart: x y z, then 2 x, 3 - y, z + x, 0.5, two floats never read.
+    const int n = surface.numControlVertices();
+    std::vector<float> wide(std::size_t(n) * 9, -1e30f);
+    for (int i = 0; i < n; ++i) {
+        const float* p = &r.positions[0][3 * std::size_t(i)];
+        float* w = &wide[9 * std::size_t(i)];
+        const float values[7] = {p[0], p[1], p[2], 2 * p[0], 3 - p[1], p[2] + p[0], 0.5f};
+        std::copy(values, values + 7, w);
+    }
+    FaceSurfaceFactory factory(surface);
+    FaceSurface face = factory.faceSurface(5);
+    float p[3], q[7], dq[7];
+    face.evaluate(0.3, 0.8, r.positions[0].data(), 3, 3, p);
+    face.evaluate(0.3, 0.8, wide.data(), 7, 9, q, dq);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(q[c], p[c], 1e-5);
+    EXPECT_NEAR(q[3], 2 * p[0], 1e-5);
+    EXPECT_NEAR(q[4], 3 - p[1], 1e-5);
+    EXPECT_NEAR(q[5], p[2] + p[0], 1e-5);
+    EXPECT_NEAR(q[6], 0.5, 1e-6);  // a partition of unity
+    EXPECT_NEAR(dq[6], 0.0, 1e-5);
+}
+
+TEST(FaceSurface, RefusesWhatTheLimitSurfaceRefuses) {
+    const RefinedMesh r = refineMesh("osd/catmark_hole_test1.obj", 0);
+    const LimitSurface surface(*r.refiner);
+    FaceSurfaceFactory factory(surface);
+    EXPECT_THROW(factory.faceSurface(-1), SurfaceError);
+    EXPECT_THROW(factory.faceSurface(surface.numFaces()), SurfaceError);
+    EXPECT_THROW(FaceSurfaceFactory(surface, 0), SurfaceError);  // no channel
+    EXPECT_THROW(FaceSurfaceFactory(surface, -2), SurfaceError);
+    int hole = -1, solid = -1;
+    for (int f = 0; f < surface.numFaces(); ++f) (surface.isHole(f) ? hole : solid) = f;
+    ASSERT_GE(hole, 0);
+    EXPECT_THROW(factory.faceSurface(hole), SurfaceError);
+    FaceSurface face = factory.faceSurface(solid);
+    LimitPointStencil s;
+    EXPECT_THROW(face.stencil(1.5, 0.5, s), SurfaceError);
+    EXPECT_THROW(face.stencil(std::nan(""), 0.5, s), SurfaceError);
+    FaceSurface empty;
+    EXPECT_EQ(empty.face(), -1);
+    EXPECT_THROW(empty.stencil(0.5, 0.5, s), SurfaceError);
+}
+
+}  // namespace
+}  // namespace quadtri::test
