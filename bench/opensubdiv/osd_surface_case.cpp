@@ -40,7 +40,7 @@ struct PatchRoute {
     std::unique_ptr<Far::PatchTable> table;
     std::unique_ptr<Far::PatchMap> map;
     std::unique_ptr<Osd::CpuPatchTable> cpuTable;
-    std::unique_ptr<const Far::StencilTable> stencils;
+    std::unique_ptr<const Far::StencilTableReal<float>> stencils;
     std::vector<int> ptexOfFace;  // the face's first ptex face
 };
 
@@ -112,12 +112,15 @@ struct OsdSurfaceCase::State {
         Far::PatchTableFactory::Options options(kPatchIsolation);
         options.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
         r.table.reset(Far::PatchTableFactory::Create(*r.refiner, options));
-        Far::StencilTableFactory::Options stencilOptions;
+        // The templates, not Far::StencilTableFactory's wrappers: those static_cast what they build to
+        // the subclass StencilTable, a downcast UBSan rejects (as bench/opensubdiv/osd_case.cpp says).
+        using Factory = Far::StencilTableFactoryReal<float>;
+        Factory::Options stencilOptions;
         stencilOptions.generateOffsets = true;
         stencilOptions.generateIntermediateLevels = true;
-        std::unique_ptr<const Far::StencilTable> refined(Far::StencilTableFactory::Create(*r.refiner, stencilOptions));
-        if (const Far::StencilTable* local = r.table->GetLocalPointStencilTable())
-            r.stencils.reset(Far::StencilTableFactory::AppendLocalPointStencilTable(*r.refiner, refined.get(), local));
+        std::unique_ptr<const Far::StencilTableReal<float>> refined(Factory::Create(*r.refiner, stencilOptions));
+        if (const Far::StencilTableReal<float>* local = r.table->GetLocalPointStencilTable<float>())
+            r.stencils.reset(Factory::AppendLocalPointStencilTable(*r.refiner, refined.get(), local));
         else
             r.stencils = std::move(refined);
         r.map = std::make_unique<Far::PatchMap>(*r.table);
@@ -132,7 +135,7 @@ struct OsdSurfaceCase::State {
         const int numControl = cage.mesh.numVertices;
         vertices.resize(3 * std::size_t(numControl + patches.stencils->GetNumStencils()));
         std::copy(cage.mesh.positions.begin(), cage.mesh.positions.end(), vertices.begin());
-        const Far::StencilTable& t = *patches.stencils;
+        const Far::StencilTableReal<float>& t = *patches.stencils;
         if (t.GetNumStencils() == 0) return;
         Osd::CpuEvaluator::EvalStencils(vertices.data(), Osd::BufferDescriptor(0, 3, 3),
                                         vertices.data() + 3 * std::size_t(numControl), Osd::BufferDescriptor(0, 3, 3),
