@@ -96,7 +96,9 @@ FaceTree::FaceTree(Leaf kind, const FaceParameterization& param) : param_(param)
         rowColumns_.push_back(i);
         rowWeights_.push_back(1.0);
         rowOffsets_.push_back(i + 1);
+        leafColumns_.push_back(i);
     }
+    nodes_[0].numColumns = numColumns_;
     p_.assign(std::size_t(numColumns_), 0.0);
     ds_ = dt_ = p_;
 }
@@ -114,6 +116,7 @@ FaceTree::FaceTree(LocalMesh root, const Options& options, const LimitSurfaceOpt
     p_.assign(std::size_t(numColumns_), 0.0);
     ds_ = dt_ = p_;
     sum_.resize(numColumns_);
+    marked_.assign(std::size_t(numColumns_), 0);
 }
 
 FaceTree::~FaceTree() = default;
@@ -151,12 +154,14 @@ void FaceTree::classify(int id, int depth) {
     }
     if (kind != PatchKind::None) {
         node.leaf = leafOf(kind);
+        const int points = int(points_.size());
         for (int p : points_) {
             const SparseRow row = mesh.row(p);
             rowColumns_.insert(rowColumns_.end(), row.columns, row.columns + row.size);
             rowWeights_.insert(rowWeights_.end(), row.weights, row.weights + row.size);
             rowOffsets_.push_back(int(rowColumns_.size()));
         }
+        gatherColumns(node, points);
     } else if (depth >= surfaceOptions_.maxDepth) {
         // The quadratic through the exact limit points of the sub-face's next level.
         const SchemeRules& rules = rulesOf(options_.scheme);
@@ -177,6 +182,7 @@ void FaceTree::classify(int id, int depth) {
             rowOffsets_.push_back(int(rowColumns_.size()));
         }
         node.leaf = node.quad ? Leaf::QuadraticQuad : Leaf::QuadraticTriangle;
+        gatherColumns(node, int(limitNodes_.size()));
     } else {
         node.numChildren = 4;
         node.firstChild = int(children_.size());
@@ -184,6 +190,20 @@ void FaceTree::classify(int id, int depth) {
         return;
     }
     node.mesh.reset();
+}
+
+void FaceTree::gatherColumns(Node& leaf, int points) {
+    leaf.firstColumn = int(leafColumns_.size());
+    for (int k = rowBegin(leaf.firstRow); k < rowBegin(leaf.firstRow + points); ++k) {
+        const int j = rowColumns_[std::size_t(k)];
+        if (!marked_[std::size_t(j)]) {
+            marked_[std::size_t(j)] = 1;
+            leafColumns_.push_back(j);
+        }
+    }
+    std::sort(leafColumns_.begin() + leaf.firstColumn, leafColumns_.end());
+    leaf.numColumns = int(leafColumns_.size()) - leaf.firstColumn;
+    for (auto j = leafColumns_.begin() + leaf.firstColumn; j != leafColumns_.end(); ++j) marked_[std::size_t(*j)] = 0;
 }
 
 void FaceTree::locate(double u, double v, Located& out) {
@@ -210,6 +230,8 @@ void FaceTree::locate(double u, double v, Located& out) {
 
     const Node& leaf = nodes_[std::size_t(node)];
     out.firstRow = leaf.firstRow;
+    out.firstColumn = leaf.firstColumn;
+    out.numColumns = leaf.numColumns;
     double* const p = out.wP;
     double* const ds = out.wDs;
     double* const dt = out.wDt;
@@ -227,30 +249,18 @@ void FaceTree::locate(double u, double v, Located& out) {
 void FaceTree::stencil(double u, double v, const std::vector<int>& columns, LimitPointStencil& out) {
     Located at;
     locate(u, v, at);
-    for (int i = 0; i < at.count; ++i) {
-        const int row = at.firstRow + i;
-        for (int k = rowOffsets_[std::size_t(row)]; k < rowOffsets_[std::size_t(row) + 1]; ++k) {
-            const std::size_t j = std::size_t(rowColumns_[std::size_t(k)]);
-            const double x = rowWeights_[std::size_t(k)];
-            p_[j] += at.wP[i] * x;
-            ds_[j] += at.wDs[i] * x;
-            dt_[j] += at.wDt[i] * x;
-        }
-    }
-
-    // Derivatives back to (u, v); the accumulators left zero for the next point.
     out.indices.clear();
     out.position.clear();
     out.du.clear();
     out.dv.clear();
-    for (std::size_t j = 0; j < std::size_t(numColumns_); ++j) {
-        if (p_[j] == 0.0 && ds_[j] == 0.0 && dt_[j] == 0.0) continue;
-        out.indices.push_back(columns[j]);
-        out.position.push_back(p_[j]);
-        out.du.push_back(ds_[j] * at.k[0][0] + dt_[j] * at.k[1][0]);
-        out.dv.push_back(ds_[j] * at.k[0][1] + dt_[j] * at.k[1][1]);
-        p_[j] = ds_[j] = dt_[j] = 0.0;
-    }
+    // Derivatives back to (u, v); columns the point does not read left out.
+    visitWeights(at, [&](int j, double p, double ds, double dt) {
+        if (p == 0.0 && ds == 0.0 && dt == 0.0) return;
+        out.indices.push_back(columns[std::size_t(j)]);
+        out.position.push_back(p);
+        out.du.push_back(ds * at.k[0][0] + dt * at.k[1][0]);
+        out.dv.push_back(ds * at.k[0][1] + dt * at.k[1][1]);
+    });
 }
 
 FaceTrees::FaceTrees(const Topology& base, const Options& options, const LimitSurfaceOptions& surfaceOptions,

@@ -40,10 +40,32 @@ public:
     // (points) and their basis weights; d(s, t)/d(u, v) takes the leaf's derivatives to the face's.
     struct Located {
         int firstRow = 0, count = 0;
+        int firstColumn = 0, numColumns = 0;  // the columns the rows read, increasing
         double wP[16], wDs[16], wDt[16];
         double k[2][2];  // k[0]: ds/du, ds/dv; k[1]: dt/du, dt/dv
     };
     void locate(double u, double v, Located& out);
+
+    // The located point's weights per column the leaf reads, as visit(column, p, ds, dt) by
+    // increasing column (ds, dt along the leaf's s and t; Located::k takes them to the face's).
+    template <class Visit>
+    void visitWeights(const Located& at, Visit&& visit) {
+        for (int i = 0; i < at.count; ++i) {
+            const int row = at.firstRow + i;
+            for (int k = rowOffsets_[std::size_t(row)]; k < rowOffsets_[std::size_t(row) + 1]; ++k) {
+                const std::size_t j = std::size_t(rowColumns_[std::size_t(k)]);
+                const double x = rowWeights_[std::size_t(k)];
+                p_[j] += at.wP[i] * x;
+                ds_[j] += at.wDs[i] * x;
+                dt_[j] += at.wDt[i] * x;
+            }
+        }
+        for (int c = at.firstColumn; c < at.firstColumn + at.numColumns; ++c) {
+            const std::size_t j = std::size_t(leafColumns_[std::size_t(c)]);
+            visit(int(j), p_[j], ds_[j], dt_[j]);
+            p_[j] = ds_[j] = dt_[j] = 0.0;
+        }
+    }
 
     // The weights of (u, v) over columns[j] for the tree's column j, derivatives along the face's
     // u and v.
@@ -61,6 +83,7 @@ private:
         int firstChild = -1;              // into children_, numChildren slots
         int numChildren = 0, numBuilt = 0;
         int firstRow = 0;                 // a leaf's points: rows firstRow .. firstRow + points
+        int firstColumn = 0, numColumns = 0;  // a leaf's: the columns its rows read, in leafColumns_
         Leaf leaf = Leaf::None;
         bool classified = false;
         bool quad = true;
@@ -68,6 +91,7 @@ private:
 
     int child(int node, int which);
     void classify(int node, int depth);
+    void gatherColumns(Node& leaf, int points);  // the columns of the leaf's rows, once
 
     Options options_;
     LimitSurfaceOptions surfaceOptions_;
@@ -80,6 +104,8 @@ private:
     std::vector<int> children_;
     std::vector<int> rowOffsets_{0}, rowColumns_;
     std::vector<double> rowWeights_;
+    std::vector<int> leafColumns_;
+    std::vector<unsigned char> marked_;  // per column, while gathering
     WalkScratch scratch_;
     std::vector<double> p_, ds_, dt_;  // per column
     RowAccumulator sum_;
