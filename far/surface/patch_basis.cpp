@@ -38,6 +38,18 @@ constexpr double kBoxSpline[12][15] = {
     {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
     {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1},
 };
+// The same, one row per monomial.
+struct Transposed {
+    double c[15][12];
+};
+constexpr Transposed transposed() {
+    Transposed t{};
+    for (int k = 0; k < 15; ++k)
+        for (int i = 0; i < 12; ++i) t.c[k][i] = kBoxSpline[i][k];
+    return t;
+}
+constexpr Transposed kBoxSplineByMonomial = transposed();
+
 constexpr int kPowerS[15] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0};
 constexpr int kPowerT[15] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4};
 
@@ -71,16 +83,18 @@ void boxSplineWeights(double s, double t, double wP[12], double wDs[12], double 
         ms[k] = a > 0 ? a * ps[a - 1] * pt[b] : 0.0;
         mt[k] = b > 0 ? b * ps[a] * pt[b - 1] : 0.0;
     }
-    for (int i = 0; i < 12; ++i) {
-        double p = 0, d = 0, e = 0;
-        for (int k = 0; k < 15; ++k) {
-            p += kBoxSpline[i][k] * m[k];
-            d += kBoxSpline[i][k] * ms[k];
-            e += kBoxSpline[i][k] * mt[k];
+    // Monomial by monomial over the 12 points at once (each point's sum in the same order).
+    double p[12] = {}, d[12] = {}, e[12] = {};
+    for (int k = 0; k < 15; ++k)
+        for (int i = 0; i < 12; ++i) {
+            p[i] += kBoxSplineByMonomial.c[k][i] * m[k];
+            d[i] += kBoxSplineByMonomial.c[k][i] * ms[k];
+            e[i] += kBoxSplineByMonomial.c[k][i] * mt[k];
         }
-        wP[i] = p / 12.0;
-        wDs[i] = d / 12.0;
-        wDt[i] = e / 12.0;
+    for (int i = 0; i < 12; ++i) {
+        wP[i] = p[i] / 12.0;
+        wDs[i] = d[i] / 12.0;
+        wDt[i] = e[i] / 12.0;
     }
 }
 
