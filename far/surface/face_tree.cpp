@@ -68,10 +68,6 @@ int enterSubFace(const FaceParameterization& p, double u, double v, Where& w) {
     return i;
 }
 
-}  // namespace
-
-namespace {
-
 FaceTree::Leaf leafOf(PatchKind kind) {
     switch (kind) {
     case PatchKind::BSpline: return FaceTree::Leaf::BSpline;

@@ -46,27 +46,6 @@ public:
     };
     void locate(double u, double v, Located& out);
 
-    // The located point's weights per column the leaf reads, as visit(column, p, ds, dt) by
-    // increasing column (ds, dt along the leaf's s and t; Located::k takes them to the face's).
-    template <class Visit>
-    void visitWeights(const Located& at, Visit&& visit) {
-        for (int i = 0; i < at.count; ++i) {
-            const int row = at.firstRow + i;
-            for (int k = rowOffsets_[std::size_t(row)]; k < rowOffsets_[std::size_t(row) + 1]; ++k) {
-                const std::size_t j = std::size_t(rowColumns_[std::size_t(k)]);
-                const double x = rowWeights_[std::size_t(k)];
-                p_[j] += at.wP[i] * x;
-                ds_[j] += at.wDs[i] * x;
-                dt_[j] += at.wDt[i] * x;
-            }
-        }
-        for (int c = at.firstColumn; c < at.firstColumn + at.numColumns; ++c) {
-            const std::size_t j = std::size_t(leafColumns_[std::size_t(c)]);
-            visit(int(j), p_[j], ds_[j], dt_[j]);
-            p_[j] = ds_[j] = dt_[j] = 0.0;
-        }
-    }
-
     // The weights of (u, v) over columns[j] for the tree's column j, derivatives along the face's
     // u and v.
     void stencil(double u, double v, const std::vector<int>& columns, LimitPointStencil& out);
@@ -88,6 +67,27 @@ private:
         bool classified = false;
         bool quad = true;
     };
+
+    // The located point's weights per column the leaf reads, as visit(column, p, ds, dt) by
+    // increasing column (ds, dt along the leaf's s and t; Located::k takes them to the face's).
+    template <class Visit>
+    void visitWeights(const Located& at, Visit&& visit) {
+        for (int i = 0; i < at.count; ++i) {
+            const int row = at.firstRow + i;
+            for (int k = rowOffsets_[std::size_t(row)]; k < rowOffsets_[std::size_t(row) + 1]; ++k) {
+                const std::size_t j = std::size_t(rowColumns_[std::size_t(k)]);
+                const double x = rowWeights_[std::size_t(k)];
+                p_[j] += at.wP[i] * x;
+                ds_[j] += at.wDs[i] * x;
+                dt_[j] += at.wDt[i] * x;
+            }
+        }
+        for (int c = at.firstColumn; c < at.firstColumn + at.numColumns; ++c) {
+            const std::size_t j = std::size_t(leafColumns_[std::size_t(c)]);
+            visit(int(j), p_[j], ds_[j], dt_[j]);
+            p_[j] = ds_[j] = dt_[j] = 0.0;
+        }
+    }
 
     int child(int node, int which);
     void classify(int node, int depth);

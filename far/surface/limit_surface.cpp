@@ -209,8 +209,9 @@ LimitStencilTable LimitSurface::fvarStencilTable(int c, int count, const int* fa
     return tableOf(c, count, faces, u, v);
 }
 
-// Points grouped by face, each group (at most kGroup points) on a tree of its own: the same
-// stencils as one point at a time, in any order, on any number of threads.
+// Points grouped by face (groups of at most kGroup points, the threads' tasks), each thread's
+// trees kept for the whole table: the same stencils as one point at a time, in any order, on any
+// number of threads.
 LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, const double* u, const double* v) const {
     for (int i = 0; i < count; ++i) {
         try {
