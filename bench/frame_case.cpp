@@ -118,6 +118,8 @@ FrameCase::FrameCase(std::string name, const TopologyDescriptor& descriptor, con
     if (vulkan) {
         const realtime::SurfaceTables& fastest = factorized_ ? *factorized_ : *chain_;
         ways_.push_back({routeName(fastest.route), std::make_unique<realtime::VulkanFrameEvaluator>(*vulkan, fastest)});
+        if (patches_)
+            ways_.push_back({routeName(patches_->route), std::make_unique<realtime::VulkanFrameEvaluator>(*vulkan, *patches_)});
     }
 #endif
     for (bool threaded : {false, true})

@@ -123,19 +123,29 @@ bool hostLimitCall(HostLimitCall& call, const float* src, const BufferDescriptor
 
 static_assert(kernels::kMaxRate == LevelPatchTable::kMaxRate, "the kernel's grid-line bytes follow the table's");
 
-HostLevelPatchCall levelPatchCall(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
-                                  const BufferDescriptor& positionDesc, float* dstNormal,
-                                  const BufferDescriptor& normalDesc, const LevelPatchTable& t) {
+void checkLevelPatchArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool positionPresent,
+                              const BufferDescriptor& positionDesc, bool normalPresent,
+                              const BufferDescriptor& normalDesc) {
     auto check = [](bool ok, const std::string& what) {
         if (!ok) throw std::invalid_argument("EvalLevelPatches: " + what);
     };
-    check(src != nullptr, "no source buffer");
+    check(srcPresent, "no source buffer");
     check(srcDesc.isValid() && srcDesc.length == 3, "the source descriptor must be valid, of length 3");
-    check(dstPosition != nullptr || dstNormal != nullptr, "neither positions nor normals asked for");
-    check(!dstPosition || (positionDesc.isValid() && positionDesc.length == 3),
+    check(positionPresent || normalPresent, "neither positions nor normals asked for");
+    check(!positionPresent || (positionDesc.isValid() && positionDesc.length == 3),
           "the position descriptor must be valid, of length 3");
-    check(!dstNormal || (normalDesc.isValid() && normalDesc.length == 3),
+    check(!normalPresent || (normalDesc.isValid() && normalDesc.length == 3),
           "the normal descriptor must be valid, of length 3");
+}
+
+HostLevelPatchCall levelPatchCall(const float* src, const BufferDescriptor& srcDesc, float* dstPosition,
+                                  const BufferDescriptor& positionDesc, float* dstNormal,
+                                  const BufferDescriptor& normalDesc, const LevelPatchTable& t) {
+    checkLevelPatchArguments(src != nullptr, srcDesc, dstPosition != nullptr, positionDesc, dstNormal != nullptr,
+                             normalDesc);
+    auto check = [](bool ok, const std::string& what) {
+        if (!ok) throw std::invalid_argument("EvalLevelPatches: " + what);
+    };
     check(t.pointOffsets.size() == t.patchBasis.size() + 1 && t.outputOffsets.size() == t.patchBasis.size() + 1 &&
               t.outputCells.size() == t.outputVertices.size() &&
               t.stencilVertices.size() == std::size_t(t.stencils.numStencils()) &&

@@ -1,10 +1,12 @@
 #include "tests/test_support.h"
 
+#include <stdexcept>
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -138,6 +140,15 @@ void expectShortCutEqualsTheRules(const std::string& mesh, const Options& option
         EXPECT_EQ(built.weightOffsets, rules.weightOffsets) << where;
         EXPECT_EQ(built.weights, rules.weights) << where;
     }
+}
+
+std::string messageOf(const std::function<void()>& call) {
+    try {
+        call();
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "(no exception)";
 }
 
 }  // namespace quadtri::test

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -55,6 +56,9 @@ double stencilWeightSum(const StencilTable& table, int i);
 
 // Every mesh of tests/meshes/osd and tests/meshes/mixed ("osd/catmark_cube.obj", ...), sorted.
 std::vector<std::string> allMeshes();
+
+// The message of the std::invalid_argument `call` throws, or "(no exception)".
+std::string messageOf(const std::function<void()>& call);
 
 // `text` with every character that is not a letter or digit replaced by '_' (a test name).
 std::string testNameOf(std::string text);

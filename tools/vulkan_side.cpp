@@ -104,10 +104,6 @@ private:
 
 std::unique_ptr<realtime::FrameEvaluator> makeVulkanFrameEvaluator(const realtime::SurfaceTables& tables,
                                                                    std::string& device) {
-    if (tables.route == realtime::TableRoute::Patches) {
-        std::fprintf(stderr, "quadtri: the patch route has no Vulkan evaluator yet; vulkan skipped\n");
-        return nullptr;
-    }
     try {
         auto evaluator = std::make_unique<HeadlessFrameEvaluator>(tables);
         device = evaluator->deviceName();

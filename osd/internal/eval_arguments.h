@@ -86,8 +86,13 @@ inline kernels::MeshNormalArrays meshNormalArrays(const MeshNormalTable& table) 
                                      table.vertexFaceOffsets.data(), table.vertexFaces.data()};
 }
 
-// EvalLevelPatches: valid descriptors of length 3 for the source and each output given, at least
-// one output; the patches' arrays and the stencils' as the kernels read them, with the outputs
+// EvalLevelPatches: the source buffer, valid descriptors of length 3 for the source and each
+// output given, at least one output. Throws std::invalid_argument.
+QUADTRI_API void checkLevelPatchArguments(bool srcPresent, const BufferDescriptor& srcDesc, bool positionPresent,
+                                          const BufferDescriptor& positionDesc, bool normalPresent,
+                                          const BufferDescriptor& normalDesc);
+
+// The host's EvalLevelPatches: checkLevelPatchArguments, the table's array lengths; the patches' arrays and the stencils' as the kernels read them, with the outputs
 // offset. Throws std::invalid_argument.
 struct HostLevelPatchCall {
     const float* src;

@@ -1,5 +1,6 @@
-// Limit positions, tangents and normals (shaders/limit_eval.comp) and area-weighted mesh normals
-// (shaders/mesh_normals.comp) on a Vulkan device, with the contracts, argument checks and
+// Limit positions, tangents and normals (shaders/limit_eval.comp), area-weighted mesh normals
+// (shaders/mesh_normals.comp) and a level's limit from patches (shaders/level_patches.comp) on a
+// Vulkan device, with the contracts, argument checks and
 // messages of CpuEvaluator::EvalLimitStencils and EvalMeshNormals, and VulkanEvaluator's
 // recording rules (barrier after each dispatch, descriptor sets kept until
 // resetDescriptorSets()).
@@ -54,6 +55,20 @@ public:
                                 const VulkanVertexBuffer& dst, const BufferDescriptor& dstDesc,
                                 const VulkanMeshNormalTable& table, int start = 0, int end = -1);
 
+    // Records level L's limit positions and unit normals from level K's positions (src) through
+    // `table`: its patches, then its stencils (two dispatches); point k written at element k of
+    // each output given (an output whose buffer is VK_NULL_HANDLE is not written; not both).
+    // CpuEvaluator::EvalLevelPatches' contract, within float rounding of its results.
+    void EvalLevelPatches(VkCommandBuffer cmd, const VulkanBufferRef& src, const BufferDescriptor& srcDesc,
+                          const VulkanBufferRef& position, const BufferDescriptor& positionDesc,
+                          const VulkanBufferRef& normal, const BufferDescriptor& normalDesc,
+                          const VulkanLevelPatchTable& table);
+    // The same over VulkanVertexBuffers (null: not written), sizes checked; submits and waits.
+    void EvalLevelPatchesAndWait(const VulkanVertexBuffer& src, const BufferDescriptor& srcDesc,
+                                 const VulkanVertexBuffer* position, const BufferDescriptor& positionDesc,
+                                 const VulkanVertexBuffer* normal, const BufferDescriptor& normalDesc,
+                                 const VulkanLevelPatchTable& table);
+
     // Frees the descriptor sets of every evaluation recorded so far, once the device has
     // finished the command buffers recorded with this evaluator.
     void resetDescriptorSets();
@@ -65,10 +80,14 @@ private:
     void recordNormals(VkCommandBuffer cmd, bool waited, const VulkanBufferRef& src, const BufferDescriptor& srcDesc,
                        const VulkanBufferRef& dst, const BufferDescriptor& dstDesc, const VulkanMeshNormalTable& table,
                        int start, int end);
+    void recordPatches(VkCommandBuffer cmd, bool waited, const VulkanBufferRef& src, const BufferDescriptor& srcDesc,
+                       const VulkanBufferRef& position, const BufferDescriptor& positionDesc,
+                       const VulkanBufferRef& normal, const BufferDescriptor& normalDesc,
+                       const VulkanLevelPatchTable& table);
     void resetWaited();
 
     VulkanContext& ctx_;
-    struct Kernels;  // the limit and normal kernels, and what is bound where an evaluation has nothing
+    struct Kernels;  // the limit, normal and patch kernels, and what is bound where an evaluation has nothing
     std::unique_ptr<Kernels> kernels_;
 };
 

@@ -1,5 +1,5 @@
-// A LimitStencilTable and a MeshNormalTable uploaded once to device-local storage buffers, for
-// VulkanLimitEvaluator (like VulkanStencilTable for VulkanEvaluator).
+// A LimitStencilTable, a MeshNormalTable and a LevelPatchTable uploaded once to device-local
+// storage buffers, for VulkanLimitEvaluator (like VulkanStencilTable for VulkanEvaluator).
 #pragma once
 
 #include <memory>
@@ -7,6 +7,7 @@
 #include <vulkan/vulkan.h>
 
 #include <quadtri/export.h>
+#include <quadtri/far/level_patch_table.h>
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/osd/vulkan_context.h>
@@ -49,6 +50,45 @@ private:
     VkBuffer handles_[4] = {};
     struct Arrays;  // the buffers behind handles_
     std::unique_ptr<Arrays> arrays_;
+};
+
+// A LevelPatchTable (Refiner::levelPatches; docs/patches.md) uploaded once: its patches' seven
+// arrays for shaders/level_patches.comp (the grid cells two to a 32-bit word, as the host's
+// 16-bit array lies in memory) and its stencils as a VulkanLimitStencilTable.
+class QUADTRI_API VulkanLevelPatchTable {
+public:
+    // Copies the arrays through one staging buffer (waits); std::invalid_argument when they are
+    // inconsistent: arrays of the wrong lengths, a patch without 16 (B-spline) or 12 (box-spline)
+    // points, a point outside level K, an output outside the grid or the table (the shader would
+    // read or write past them).
+    VulkanLevelPatchTable(VulkanContext& ctx, const LevelPatchTable& table);
+    ~VulkanLevelPatchTable();
+    VulkanLevelPatchTable(VulkanLevelPatchTable&&) noexcept;
+    VulkanLevelPatchTable& operator=(VulkanLevelPatchTable&&) noexcept;
+
+    int numPoints() const { return numPoints_; }
+    int numSourceVertices() const { return numSourceVertices_; }
+    int numPatches() const { return numPatches_; }
+    int numPatchOutputs() const { return numPatchOutputs_; }
+    int rate() const { return rate_; }
+    // patchBasis (as int), pointOffsets, patchPoints, outputOffsets, outputCells, curveWeights,
+    // boxSplineWeights, as the shader binds them.
+    const VkBuffer (&buffers() const)[7] { return handles_; }
+    // patchPoints, outputCells and boxSplineWeights as uniform texel buffers (R32_SINT, R32_UINT,
+    // R32_SFLOAT), or VK_NULL_HANDLE each where one has more elements than the context's
+    // texelBufferLimit().
+    const VkBufferView (&texels() const)[3] { return texelHandles_; }
+    const VulkanLimitStencilTable& stencils() const { return stencils_; }
+    VkDevice device() const { return device_; }
+
+private:
+    VkDevice device_;
+    int numPoints_ = 0, numSourceVertices_ = 0, numPatches_ = 0, numPatchOutputs_ = 0, rate_ = 1;
+    VkBuffer handles_[7] = {};
+    VkBufferView texelHandles_[3] = {};
+    struct Arrays;  // the buffers behind handles_
+    std::unique_ptr<Arrays> arrays_;
+    VulkanLimitStencilTable stencils_;
 };
 
 }  // namespace v0

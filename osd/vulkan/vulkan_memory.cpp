@@ -146,7 +146,8 @@ void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions) {
 
 UnusedBindings::UnusedBindings(VulkanContext& ctx, VkBufferUsageFlags usage)
     : buffer(ctx, 16, usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
-      indexTexels(ctx, buffer, VK_FORMAT_R32_SINT), floatTexels(ctx, buffer, VK_FORMAT_R32_SFLOAT) {}
+      indexTexels(ctx, buffer, VK_FORMAT_R32_SINT), uintTexels(ctx, buffer, VK_FORMAT_R32_UINT),
+      floatTexels(ctx, buffer, VK_FORMAT_R32_SFLOAT) {}
 
 }  // namespace detail
 }  // namespace v0

@@ -74,13 +74,13 @@ QUADTRI_API void upload(VulkanContext& ctx, const std::vector<CopyRegion>& regio
 // Copies every region into its `target`, waiting for the device.
 QUADTRI_API void download(VulkanContext& ctx, const std::vector<CopyRegion>& regions);
 
-// A small buffer with R32_SINT and R32_SFLOAT texel views over it: bound where an evaluation has
+// A small buffer with R32_SINT, R32_UINT and R32_SFLOAT texel views over it: bound where an evaluation has
 // no buffer or view of its own for a binding (a table whose pools have no texel views, an absent
 // output), since every binding of a descriptor set must name something.
 struct UnusedBindings {
     UnusedBindings(VulkanContext& ctx, VkBufferUsageFlags usage);
     DeviceBuffer buffer;
-    TexelView indexTexels, floatTexels;
+    TexelView indexTexels, uintTexels, floatTexels;
 };
 
 // Makes transfer writes (copies, fills) visible to later compute-shader and transfer access.

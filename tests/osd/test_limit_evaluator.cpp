@@ -363,15 +363,6 @@ TEST(LimitEvaluator, RefinerTablesGiveFlatAndOutwardNormals) {
     }
 }
 
-std::string messageOf(const std::function<void()>& call) {
-    try {
-        call();
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    }
-    return "(no exception)";
-}
-
 TEST(LimitEvaluator, BadArgumentsGiveTheSameMessageOnBothEvaluators) {
     const LimitStencilTable t = randomLimitTable(10, 8, 1);
     LimitStencilTable shortOffsets = t;

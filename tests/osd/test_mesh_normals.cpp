@@ -293,15 +293,6 @@ TEST(MeshNormals, WholeLevelPassEqualsPerVertexPassAndTheShoelaceSums) {
     }
 }
 
-std::string messageOf(const std::function<void()>& call) {
-    try {
-        call();
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    }
-    return "(no exception)";
-}
-
 TEST(MeshNormals, BadArgumentsGiveTheSameMessageOnBothEvaluators) {
     const MeshNormalTable t = tableOf(kCubeSizes, kCubeVerts, 8);
     const std::vector<float> xyz = cubePositions();

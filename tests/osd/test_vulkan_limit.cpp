@@ -29,19 +29,7 @@ constexpr double kTolerance = 1e-5;  // relative to max(1, |value|)
 const BufferDescriptor kPacked(0, 3, 3);
 
 VulkanVertexBuffer upload(VulkanContext& ctx, const std::vector<float>& data, int stride) {
-    const int elements = int((data.size() + stride - 1) / stride);
-    std::vector<float> padded(std::size_t(elements) * stride, kUntouched);
-    std::copy(data.begin(), data.end(), padded.begin());
-    VulkanVertexBuffer b = VulkanVertexBuffer::create(ctx, elements, stride);
-    b.updateData(padded.data(), 0, elements);
-    return b;
-}
-
-std::vector<float> download(const VulkanVertexBuffer& b, std::size_t floats) {
-    std::vector<float> out(b.numFloats());
-    b.readBack(out.data());
-    out.resize(floats);
-    return out;
+    return uploadPadded(ctx, data, stride, kUntouched);
 }
 
 // Within kTolerance, times conditioning(f) where given: a unit normal's float rounding grows with
@@ -115,11 +103,11 @@ void compareLimit(VulkanContext& ctx, VulkanLimitEvaluator& eval, const LimitSte
     eval.EvalLimitStencilsAndWait(s, srcDesc, ptr[0], descs[0], ptr[1], descs[1], ptr[2], descs[2], ptr[3], descs[3],
                                   gpuTable, gpuFallback.get(), start, end);
     const char* names[4] = {"position", "dU", "dV", "normal"};
-    for (int k = 0; k < 3; ++k) expectClose(download(outs[k], cpu[k].size()), cpu[k], what + " " + names[k]);
+    for (int k = 0; k < 3; ++k) expectClose(downloadFloats(outs[k], cpu[k].size()), cpu[k], what + " " + names[k]);
     if (!want[3]) return;
     const std::vector<double> scale = normalConditioning(table, src, srcDesc);
     const BufferDescriptor& d = descs[3];
-    expectClose(download(outs[3], cpu[3].size()), cpu[3], what + " normal",
+    expectClose(downloadFloats(outs[3], cpu[3].size()), cpu[3], what + " normal",
                 [&](std::size_t f) { return scale[(f - std::size_t(d.offset)) / d.stride]; });
 }
 
@@ -138,7 +126,7 @@ void compareMeshNormals(VulkanContext& ctx, VulkanLimitEvaluator& eval, const Me
     const VulkanVertexBuffer s = upload(ctx, host, src.stride);
     const VulkanVertexBuffer d = upload(ctx, std::vector<float>(outFloats, kUntouched), dst.stride);
     eval.EvalMeshNormalsAndWait(s, src, d, dst, gpuTable, start, end);
-    expectClose(download(d, outFloats), cpu, what);
+    expectClose(downloadFloats(d, outFloats), cpu, what);
 }
 
 TEST_F(VulkanTest, MeshNormalsMatchCpu) {
@@ -233,16 +221,7 @@ TEST_F(VulkanTest, LimitRecordedIntoOneSharedBuffer) {
                                refs[3], kPacked, table, &fallback);
     });
     eval.resetDescriptorSets();
-    expectClose(download(all, expected.size()), expected, "one shared buffer");
-}
-
-std::string messageOf(const std::function<void()>& call) {
-    try {
-        call();
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    }
-    return "(no exception)";
+    expectClose(downloadFloats(all, expected.size()), expected, "one shared buffer");
 }
 
 // The device reads whatever the table's arrays say: a table whose arrays disagree, or whose run

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <link.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -90,6 +91,22 @@ void expectSameLayout(const std::vector<float>& a, const std::vector<float>& b, 
                           << " vs " << b[f] << ", tolerance " << tol;
         }
     }
+}
+
+VulkanVertexBuffer uploadPadded(VulkanContext& ctx, const std::vector<float>& data, int stride, float fill) {
+    const int elements = int((data.size() + std::size_t(stride) - 1) / std::size_t(stride));
+    std::vector<float> padded(std::size_t(elements) * std::size_t(stride), fill);
+    std::copy(data.begin(), data.end(), padded.begin());
+    VulkanVertexBuffer b = VulkanVertexBuffer::create(ctx, elements, stride);
+    b.updateData(padded.data(), 0, elements);
+    return b;
+}
+
+std::vector<float> downloadFloats(const VulkanVertexBuffer& b, std::size_t floats) {
+    std::vector<float> out(b.numFloats());
+    b.readBack(out.data());
+    out.resize(floats);
+    return out;
 }
 
 }  // namespace quadtri::test

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <quadtri/osd/buffer_descriptor.h>
+#include <quadtri/osd/vulkan_buffer.h>
 #include <quadtri/osd/vulkan_context.h>
 
 namespace quadtri::test {
@@ -39,6 +40,12 @@ protected:
 inline std::size_t layoutFloats(const BufferDescriptor& d, int count) {
     return std::size_t(d.offset) + std::size_t(count) * std::size_t(d.stride);
 }
+
+// A buffer of `stride`-float elements holding `data` from float 0, the last element's floats
+// past it `fill`.
+VulkanVertexBuffer uploadPadded(VulkanContext& ctx, const std::vector<float>& data, int stride, float fill);
+// The first `floats` floats of `b`.
+std::vector<float> downloadFloats(const VulkanVertexBuffer& b, std::size_t floats);
 
 // Per-vertex data of `width` floats derived from 3-float positions (same scale as the mesh).
 std::vector<float> primvar(const std::vector<float>& xyz, int width);

@@ -100,11 +100,17 @@ expect_contains("${OUT}" "cpu against tbb, same frame: positions within 0, norma
 if(NOT OUT MATCHES "\n\\| tbb \\| 3 \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\| [0-9.]+ \\|\n\\| cpu \\| 3 \\|")
   message(FATAL_ERROR "${CMD}: no tbb then cpu rows of 3 frames in:\n${OUT}")
 endif()
-# The patch route: host evaluators agree bit for bit; Vulkan has no patch evaluator yet and says so.
+# The patch route: host evaluators agree bit for bit, Vulkan within float rounding.
+set(RUN_PREFIX ${VULKAN_PREFIX})
 run(0 demo "${CYLINDER}" --level 3 --frames 3 --evaluators cpu,tbb,vulkan --tables patches)
+unset(RUN_PREFIX)
 expect_contains("${OUT}" "through the per-level then patches tables")
 expect_contains("${OUT}" "tbb against cpu, same frame: positions within 0, normals within 0")
-expect_contains("${ERR}" "the patch route has no Vulkan evaluator yet; vulkan skipped")
+# With a device, its agreement within float rounding (a single digit before e-05 ... e-09, or 0).
+if(WITH_VULKAN AND OUT MATCHES "\nvulkan: device " AND NOT OUT MATCHES
+   "\nvulkan against cpu, same frame: positions within ([0-9.]+e-0[5-9]|0), normals within ([0-9.]+e-0[5-9]|0)\n")
+  message(FATAL_ERROR "${CMD}: the patch route's vulkan frame does not agree with cpu's:\n${OUT}")
+endif()
 
 # --- UVs: the file's vt refined with the mesh as face-varying channel 0 --------------------------
 # catmark_cube's 14 vt are the usual cross unwrap: 7 of its 12 edges have faces disagreeing on a

@@ -27,8 +27,7 @@ enum class TableRoute {
     LevelsThenLimit,
     // Level by level to the patch level K = max(0, N - 3), then level N from K's regular patches
     // (Refiner::levelPatches, docs/patches.md): no index per point where a face is a regular
-    // patch, stencils over level K elsewhere. Its points come in the patch table's order; host
-    // evaluators only for now.
+    // patch, stencils over level K elsewhere. Its points come in the patch table's order.
     Patches,
 };
 const char* toString(TableRoute route);

@@ -41,8 +41,10 @@ VulkanFrameEvaluator::VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTabl
       source_(VulkanVertexBuffer::create(ctx, levelFirst_.back(), 3)),
       positions_(VulkanVertexBuffer::create(ctx, tables.numPoints, 3)),
       normals_(VulkanVertexBuffer::create(ctx, tables.numPoints, 3)), stencilEvaluator_(ctx), limitEvaluator_(ctx) {
-    if (tables.route == TableRoute::Patches)
-        throw std::invalid_argument("VulkanFrameEvaluator: the patch route has no Vulkan evaluator yet");
+    if (!tables.patches) return;
+    patches_ = std::make_unique<VulkanLevelPatchTable>(ctx, *tables.patches);
+    vertexOfPoint_.resize(std::size_t(tables.numPoints));
+    for (int k = 0; k < tables.numPoints; ++k) vertexOfPoint_[std::size_t(k)] = tables.patches->vertexOf(k);
 }
 
 void VulkanFrameEvaluator::setCage(const float* cage) { source_.updateData(cage, 0, numControl_); }
@@ -66,6 +68,11 @@ void VulkanFrameEvaluator::recordLevels(VkCommandBuffer cmd) {
 void VulkanFrameEvaluator::recordLimit(VkCommandBuffer cmd) {
     // The limit table reads the last level: the cage itself for a factorized table.
     const VkDeviceSize lastLevel = VkDeviceSize(levelFirst_[levelFirst_.size() - 2]) * 3 * sizeof(float);
+    if (patches_) {
+        limitEvaluator_.EvalLevelPatches(cmd, {source_.buffer(), lastLevel, source_.texels()}, kXyz,
+                                         {positions_.buffer(), 0}, kXyz, {normals_.buffer(), 0}, kXyz, *patches_);
+        return;
+    }
     limitEvaluator_.EvalLimitStencils(cmd, {source_.buffer(), lastLevel, source_.texels()}, kXyz, {positions_.buffer(), 0}, kXyz, {},
                                       kXyz, {}, kXyz, {normals_.buffer(), 0}, kXyz, limit_, fallback_.get());
 }
@@ -101,6 +108,13 @@ void VulkanFrameEvaluator::readBack(std::vector<float>& positions, std::vector<f
     normals.resize(normals_.numFloats());
     positions_.readBack(positions.data());
     normals_.readBack(normals.data());
+    if (vertexOfPoint_.empty()) return;
+    // The patch table's points, back in level order.
+    const std::vector<float> p(positions), n(normals);
+    for (std::size_t k = 0; k < vertexOfPoint_.size(); ++k) {
+        const std::size_t v = std::size_t(vertexOfPoint_[k]);
+        for (std::size_t c = 0; c < 3; ++c) positions[3 * v + c] = p[3 * k + c], normals[3 * v + c] = n[3 * k + c];
+    }
 }
 
 }  // namespace quadtri::realtime

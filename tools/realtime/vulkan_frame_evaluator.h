@@ -29,7 +29,8 @@ public:
     // Uploads the cage (one staging copy, waited on).
     void setCage(const float* cage) override;
     // record() into a command buffer of the context's, submitted and waited on (the levels and
-    // the limit pass in two submissions under LevelsThenLimit, to time them apart).
+    // the limit or patch pass in two submissions under LevelsThenLimit and Patches, to time them
+    // apart).
     void evaluate(PhaseTimes& times) override;
     void readBack(std::vector<float>& positions, std::vector<float>& normals) override;
 
@@ -44,7 +45,9 @@ public:
     void record(VkCommandBuffer cmd);
     void resetDescriptorSets();
 
-    // Level N's limit positions and unit normals, 3 floats per vertex, element i = vertex i.
+    // Level N's limit positions and unit normals, 3 floats per vertex, element i = vertex i (under
+    // TableRoute::Patches, element k = the patch table's point k: LevelPatchTable::vertexOf;
+    // readBack puts them back in level order).
     const VulkanVertexBuffer& positions() const { return positions_; }
     const VulkanVertexBuffer& normals() const { return normals_; }
     VulkanContext& context() const { return ctx_; }
@@ -60,6 +63,8 @@ private:
     std::vector<int> levelFirst_;   // first element of each level in source_ (EvalLevels' layout)
     VulkanLimitStencilTable limit_;
     std::unique_ptr<VulkanMeshNormalTable> fallback_;
+    std::unique_ptr<VulkanLevelPatchTable> patches_;  // Patches: level N from the last level
+    std::vector<int> vertexOfPoint_;                  // Patches: each point's level-N vertex
     // The cage at elements [0, numControl), followed by levels 1..N under LevelsThenLimit.
     VulkanVertexBuffer source_, positions_, normals_;
     detail::DeviceBuffer staging_;  // recordCage's copy of the cage
