@@ -136,6 +136,29 @@ struct CaseResult {
     MemcpyFigures memcpyWorkingSet;
 };
 
+// One way to tessellate a whole cage at a uniform rate: points, unit normals and triangles,
+// serial (bench/tessellation_case.h).
+struct TessellationWay {
+    std::string library;  // "quadtri" or "opensubdiv"
+    // quadtri: "tessellation" (Tessellation + LimitSurface::stencilTable + EvalLimitStencils);
+    // OpenSubdiv: "bfr_tessellation" (per face Bfr::Surface at its default approximation levels,
+    // Bfr::Tessellation, Surface::Evaluate at each coordinate; every face its own boundary points)
+    std::string way;
+    int points = 0;     // points evaluated (Bfr: a shared edge's points once per face)
+    int triangles = 0;
+    Timing firstMs;     // from the mesh's arrays to points, normals and the index buffer
+    Timing frameMs;     // the same triangles, the cage moved: points and normals again
+    double area = 0;    // the triangles' total area (both sides tessellate the same surface)
+};
+
+struct TessellationCaseResult {
+    std::string mesh;
+    std::string scheme;
+    int faces = 0;
+    int rate = 0;
+    std::vector<TessellationWay> ways;
+};
+
 struct BenchResult {
     std::string date;           // UTC, ISO 8601
     std::string cpu;            // /proc/cpuinfo's model name
@@ -148,6 +171,7 @@ struct BenchResult {
     std::vector<LimitCaseResult> limitCases;
     std::vector<FrameCaseResult> frameCases;
     std::vector<SurfaceCaseResult> surfaceCases;
+    std::vector<TessellationCaseResult> tessellationCases;
 };
 
 }  // namespace quadtri::bench

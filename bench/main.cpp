@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <fstream>
 #include <cstdio>
@@ -31,9 +32,11 @@
 #include "bench/opensubdiv/osd_frame_case.h"
 #include "bench/opensubdiv/osd_limit_case.h"
 #include "bench/opensubdiv/osd_surface_case.h"
+#include "bench/opensubdiv/osd_tessellation_case.h"
 #include "bench/quadtri_case.h"
 #include "bench/report.h"
 #include "bench/surface_case.h"
+#include "bench/tessellation_case.h"
 #include "bench/meshes/sphere.h"
 #include "bench/meshes/torus.h"
 #include "tools/obj_io.h"
@@ -152,6 +155,9 @@ std::vector<CaseSpec> surfaceCaseList(bool quick) {
     if (!quick) cases.push_back({torusName(kFrameTriTorus, TorusFaces::Triangles), Scheme::Loop, OsdScheme::Loop, 0});
     return cases;
 }
+
+// The tessellation cases' rate (--quick: 2): each surface case's cage cut at it.
+constexpr int kTessellationRate = 4;
 
 std::string schemeName(const CaseSpec& spec) {
     const std::string qt = toString(spec.scheme);
@@ -286,6 +292,27 @@ SurfaceCaseResult runSurfaceCase(const CaseSpec& spec, const SurfaceCage& cage, 
     return result;
 }
 
+// The surface case's cage tessellated at `rate` by quadtri and, where OpenSubdiv has the scheme,
+// by Bfr face by face; the two tessellations' areas must agree within 1e-3 first (the same
+// surface at the same rate; Bfr approximates near extraordinary vertices).
+TessellationCaseResult runTessellationCase(const CaseSpec& spec, const SurfaceCage& cage, int rate, int reps) {
+    TessellationCaseResult result;
+    result.mesh = spec.mesh;
+    result.scheme = schemeName(spec);
+    result.faces = cage.mesh.numFaces();
+    result.rate = rate;
+    result.ways.push_back(measureQuadtriTessellation(cage, rate, reps));
+    if (spec.osd) {
+        result.ways.push_back(measureBfrTessellation(cage, *spec.osd, rate, reps));
+        const double a = result.ways[0].area, b = result.ways[1].area;
+        if (!(std::fabs(a - b) <= 1e-3 * b))
+            throw std::runtime_error(spec.mesh + ": quadtri's tessellation has area " + std::to_string(a) + ", Bfr's " +
+                                     std::to_string(b));
+        std::cerr << "  tessellated areas agree with Bfr's within " << std::fabs(a - b) / b << "\n";
+    }
+    return result;
+}
+
 // Where the two sides' frames are compared before timing: well into the bend (as the demo).
 constexpr float kFrameCheckRadians = 1.2f;
 
@@ -362,7 +389,8 @@ int usage(const char* message) {
                  "               the 2000-segment spheres at level 1, 3 repetitions\n"
                  "  --limit      only the limit cases (limit positions + normals, mesh normals)\n"
                  "  --frame      only the frame cases (skin + level N's limit positions and normals)\n"
-                 "  --surface    only the surface cases (points at random (u, v) on every face, against Bfr)\n"
+                 "  --surface    only the surface and tessellation cases (points at random (u, v) on every\n"
+                 "               face, and every face at rate 4, against Bfr)\n"
                  "  --json FILE  also write the figures as JSON to FILE\n"
                  "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
                  "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad,\n"
@@ -481,6 +509,9 @@ int run(int argc, char** argv) {
         if (isLimb && !limb) limb = io::readObj(std::string(QUADTRI_BENCH_DATA_DIR) + "/mixed_limb.obj");
         const SurfaceCage cage = surfaceCage(spec, isLimb ? nullptr : &meshOf(spec.mesh), isLimb ? &*limb : nullptr);
         result.surfaceCases.push_back(runSurfaceCase(spec, cage, quick ? 1 : 8, reps));
+        std::cerr << "[tessellation " << i + 1 << "/" << surfaces.size() << "] " << spec.mesh << " " << schemeName(spec)
+                  << "\n";
+        result.tessellationCases.push_back(runTessellationCase(spec, cage, quick ? 2 : kTessellationRate, reps));
     }
 
     printMarkdown(std::cout, result);

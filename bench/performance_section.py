@@ -256,6 +256,21 @@ def surface_table(r):
     return rows
 
 
+def tessellation_table(r):
+    rows = ["| mesh | scheme | rate | way | points | triangles | first ms | frame ms | OSD / quadtri: first | frame |",
+            "|---|---|---:|---|---:|---:|---:|---:|---:|---:|"]
+    for c in r.get("tessellation_cases", []):
+        q = c["ways"][0]
+        for w in c["ways"]:
+            peer = w is not q
+            rows.append(
+                f"| {c['mesh']} | {c['scheme']} | {c['rate']} | {w['library']} `{w['way']}` | {w['points']} | "
+                f"{w['triangles']} | {timing(w['first_ms'])} | {timing(w['frame_ms'])} | "
+                f"{ratio(median(w['first_ms']), median(q['first_ms'])) if peer else ''} | "
+                f"{ratio(median(w['frame_ms']), median(q['frame_ms'])) if peer else ''} |")
+    return rows
+
+
 def summary(r):
     """Ratio ranges at levels >= 3 (all levels where no case reaches 3)."""
     osd_cases = [c for c in r["cases"] if c["osd"]]
@@ -450,6 +465,16 @@ def section(r, note):
                   " trees, Bfr's irregular patches; the patch table finds each point's patch); caches full: the same"
                   " points again. Errors: against Bfr at level 10 evaluated in double, of the bounding-box diagonal:", ""]
         lines += surface_table(r)
+    if r.get("tessellation_cases"):
+        lines += ["", "Tessellation of every face at a uniform rate (4; 2 with `--quick`), serial, 3 floats: points, unit"
+                  " normals and triangles (quadtri: `Tessellation`, each shared edge's and vertex's points once, their"
+                  " stencils as one `LimitSurface::stencilTable`, `CpuEvaluator::EvalLimitStencils` each frame, the"
+                  " table built on one thread; OpenSubdiv: per face `Bfr::Surface` at its defaults,"
+                  " `Bfr::Tessellation` and `Surface::Evaluate` at each coordinate, each face its own edge points)."
+                  " First: from the mesh's arrays to the first draw-ready buffers; frame: the cage moved, the same"
+                  " triangles' points and normals again (Bfr keeps each face's `Surface`). The two tessellations'"
+                  " areas are checked to agree within 1e-3 first:", ""]
+        lines += tessellation_table(r)
     lines += ["", END]
     return "\n".join(lines) + "\n"
 

@@ -301,6 +301,38 @@ void printSurfaceMarkdown(std::ostream& out, const std::vector<SurfaceCaseResult
     }
 }
 
+void writeTessellationCaseJson(std::ostream& f, const TessellationCaseResult& c) {
+    f << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme) << ", \"faces\": " << c.faces
+      << ", \"rate\": " << c.rate << ",\n     \"ways\": [";
+    for (std::size_t i = 0; i < c.ways.size(); ++i) {
+        const TessellationWay& w = c.ways[i];
+        f << (i ? ",\n" : "\n") << "       {\"library\": " << jsonString(w.library) << ", \"way\": " << jsonString(w.way)
+          << ", \"points\": " << w.points << ", \"triangles\": " << w.triangles << ",\n        \"first_ms\": "
+          << json(w.firstMs) << ", \"frame_ms\": " << json(w.frameMs) << ", \"area\": " << number(w.area) << "}";
+    }
+    f << "]}";
+}
+
+// Per case and way: points, triangles, the first tessellation and a frame's; the ratios
+// OpenSubdiv's time / quadtri's.
+void printTessellationMarkdown(std::ostream& out, const std::vector<TessellationCaseResult>& cases) {
+    if (cases.empty()) return;
+    out << "\nTessellation of every face at a uniform rate, serial: points, unit normals and triangles (first: from"
+           " the mesh's arrays; frame: the cage moved; ×: OpenSubdiv's time / quadtri's)\n\n"
+        << "| mesh | scheme | rate | way | points | triangles | first ms | frame ms | × first | × frame |\n"
+           "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const TessellationCaseResult& c : cases) {
+        const TessellationWay& q = c.ways.front();
+        for (const TessellationWay& w : c.ways) {
+            const bool peer = &w != &q;
+            out << "| " << c.mesh << " | " << c.scheme << " | " << c.rate << " | " << w.library << " " << w.way << " | "
+                << w.points << " | " << w.triangles << " | " << ms(w.firstMs.median) << " | " << ms(w.frameMs.median)
+                << " | " << (peer ? ratio(w.firstMs.median, q.firstMs.median) : "") << " | "
+                << (peer ? ratio(w.frameMs.median, q.frameMs.median) : "") << " |\n";
+        }
+    }
+}
+
 }  // namespace
 
 void writeJson(const std::string& path, const BenchResult& r) {
@@ -330,6 +362,11 @@ void writeJson(const std::string& path, const BenchResult& r) {
         f << (i ? ",\n" : "\n");
         writeSurfaceCaseJson(f, r.surfaceCases[i]);
     }
+    f << "\n  ],\n  \"tessellation_cases\": [";
+    for (std::size_t i = 0; i < r.tessellationCases.size(); ++i) {
+        f << (i ? ",\n" : "\n");
+        writeTessellationCaseJson(f, r.tessellationCases[i]);
+    }
     f << "\n  ]\n}\n";
     if (!f) throw std::runtime_error("cannot write " + path);
 }
@@ -342,6 +379,7 @@ void printMarkdown(std::ostream& out, const BenchResult& r) {
         << " GB/s with " << r.threads << "\n";
     printLimitMarkdown(out, r.limitCases);
     printSurfaceMarkdown(out, r.surfaceCases);
+    printTessellationMarkdown(out, r.tessellationCases);
 }
 
 }  // namespace quadtri::bench

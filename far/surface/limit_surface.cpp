@@ -265,6 +265,17 @@ LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, cons
                 }
             }
         });
+        if (first == 0) {
+            // The whole table reserved at the first block's entries a point: growing the double
+            // arrays by doubling costs more than the stencils (copies and fresh pages of tens of MB).
+            std::size_t entries = 0;
+            for (int i = 0; i < size; ++i) entries += std::size_t(block[std::size_t(i)].size());
+            const std::size_t estimate = entries / std::size_t(size) * std::size_t(count) + entries;
+            table.offsets.reserve(std::size_t(count));
+            table.sizes.reserve(std::size_t(count));
+            table.indices.reserve(estimate);
+            table.weights.reserve(3 * estimate);
+        }
         for (int i = 0; i < size; ++i) {
             const LimitPointStencil& s = block[std::size_t(i)];
             table.offsets.push_back(int(table.indices.size()));
