@@ -223,6 +223,18 @@ void addRenderFlags(CLI::App& cmd, cli::RenderArgs& args, const std::map<std::st
         ->check(CLI::PositiveNumber);
 }
 
+// The table routes as --tables names them.
+const std::map<std::string, realtime::TableRoute>& tableRoutes() {
+    static const std::map<std::string, realtime::TableRoute> routes = [] {
+        std::map<std::string, realtime::TableRoute> named;
+        for (auto route : {realtime::TableRoute::FactorizedLimit, realtime::TableRoute::LevelsThenLimit,
+                           realtime::TableRoute::Patches})
+            named[realtime::tablesWord(route)] = route;
+        return named;
+    }();
+    return routes;
+}
+
 void addViewFlags(CLI::App& cmd, view::ViewerArgs& args, const std::map<std::string, cli::EvaluatorKind>& evaluators) {
     addMeshFlags(cmd, args.mesh);
     addLevel(cmd, "--level,-l", args.level, "Refinement level shown first (0-6)")->check(CLI::Range(0, 6));
@@ -230,6 +242,10 @@ void addViewFlags(CLI::App& cmd, view::ViewerArgs& args, const std::map<std::str
            "--evaluator", [&args, evaluators](const std::string& s) { args.evaluator = evaluators.at(s); },
            "Evaluator at start: cpu, tbb, or vulkan (default; on the viewer's device, its buffers drawn directly)")
         ->check(oneOf(evaluators, "evaluator"));
+    cmd.add_option_function<std::string>(
+           "--tables", [&args](const std::string& s) { args.tables = tableRoutes().at(s); },
+           "The frame's tables at start: factorized (default), levels or patches, as `quadtri demo --tables`")
+        ->check(oneOf(tableRoutes(), "table route"));
     cmd.add_option("--texture", args.texture, "PNG or JPEG image for textured shading (default: a checker)");
     cmd.add_option("--script", args.script,
                    "Run the commands of FILE (docs/viewer.md), one per rendered frame, then quit");
@@ -330,15 +346,12 @@ int main(int argc, char** argv) {
             "without a device)")
         ->delimiter(',')
         ->check(oneOf(evaluators, "evaluator"));
-    static const std::map<std::string, realtime::TableRoute> routes{
-        {"factorized", realtime::TableRoute::FactorizedLimit}, {"levels", realtime::TableRoute::LevelsThenLimit},
-        {"patches", realtime::TableRoute::Patches}};
     demoCmd->add_option_function<std::string>(
-            "--tables", [&demo](const std::string& s) { demo.route = routes.at(s); },
+            "--tables", [&demo](const std::string& s) { demo.route = tableRoutes().at(s); },
             "factorized: one limit pass from the cage (default); levels: the per-level tables, then the limit "
             "table over the last level; patches: the per-level tables to level - 3, then the regular patches "
-            "(docs/patches.md; host evaluators)")
-        ->check(oneOf(routes, "table route"));
+            "(docs/patches.md)")
+        ->check(oneOf(tableRoutes(), "table route"));
 
     cli::RenderArgs render;
     CLI::App* renderCmd = app.add_subcommand("render", "Draw the refined surface offscreen with Vulkan and write a PNG");

@@ -14,6 +14,21 @@ const char* toString(TableRoute route) {
     return "?";
 }
 
+std::optional<TableRoute> tableRouteNamed(const std::string& word) {
+    for (TableRoute route : {TableRoute::FactorizedLimit, TableRoute::LevelsThenLimit, TableRoute::Patches})
+        if (word == tablesWord(route)) return route;
+    return std::nullopt;
+}
+
+const char* tablesWord(TableRoute route) {
+    switch (route) {
+        case TableRoute::FactorizedLimit: return "factorized";
+        case TableRoute::LevelsThenLimit: return "levels";
+        case TableRoute::Patches: return "patches";
+    }
+    return "?";
+}
+
 SurfaceTables::SurfaceTables(const Refiner& refiner, int level, TableRoute route)
     : route(route), level(level), numControl(refiner.faces(0).numVertices()), numPoints(0) {
     if (level < 0 || level > refiner.maxLevel())

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <optional>
-
+#include <string>
 #include <vector>
 
 #include <quadtri/far/limit_stencil_table.h>
@@ -31,6 +31,10 @@ enum class TableRoute {
     Patches,
 };
 const char* toString(TableRoute route);
+// The route `quadtri demo --tables` and `quadtri view --tables` name `word` ("factorized",
+// "levels", "patches"), or none.
+std::optional<TableRoute> tableRouteNamed(const std::string& word);
+const char* tablesWord(TableRoute route);
 
 // The host tables of `route` for level `level` (>= 0; at level 0 both routes are the cage's own
 // limit table) of `refiner` (refined at least that far), copied, so they outlive the Refiner. Throws what the Refiner throws (MemoryBudgetError

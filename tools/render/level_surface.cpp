@@ -7,12 +7,15 @@
 
 namespace quadtri::render {
 
-void showLevel(Renderer& renderer, const Refiner& refiner, int level, const float* uvValues) {
+void showLevel(Renderer& renderer, const Refiner& refiner, int level, const float* uvValues,
+               const std::vector<int>* elementOfVertex) {
     const LevelFaces faces = refiner.faces(level);
     const bool uvs = uvValues && refiner.numFVarChannels() > 0;
-    const DrawBuffers draw =
+    DrawBuffers draw =
         uvs ? buildDrawBuffers(faces, {refiner.fvarValues(0, level).begin()}, {refiner.numFVarValues(0, level)})
             : buildDrawBuffers(faces);
+    if (elementOfVertex)
+        for (int& v : draw.vertexOf) v = (*elementOfVertex)[std::size_t(v)];
     renderer.setSurface(draw, uvs ? uvValues : nullptr,
                         triangleOrigins(faces, refiner.faces(0), rootFaces(refiner, level), draw));
 }

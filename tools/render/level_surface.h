@@ -16,8 +16,11 @@
 namespace quadtri::render {
 
 // Level `level`'s faces as the renderer's surface, with `uvValues` (2 floats per value of
-// face-varying channel 0 at that level) when not null, and each triangle's FaceOrigin.
-void showLevel(Renderer& renderer, const Refiner& refiner, int level, const float* uvValues);
+// face-varying channel 0 at that level) when not null, and each triangle's FaceOrigin. With
+// `elementOfVertex`, the vertex buffers hold level vertex v at element elementOfVertex[v] (a
+// LevelPatchTable's order: pointOfVertex()).
+void showLevel(Renderer& renderer, const Refiner& refiner, int level, const float* uvValues,
+               const std::vector<int>* elementOfVertex = nullptr);
 
 // Level `level`'s positions (one buffer holding every level, one dispatch per level) and limit
 // normals, and with `limit` its limit positions, evaluated on `ctx`'s device.

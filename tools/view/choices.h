@@ -7,6 +7,7 @@
 
 #include <quadtri/far/options.h>
 #include "tools/commands.h"
+#include "tools/realtime/surface_tables.h"
 #include "tools/render/renderer.h"
 
 namespace quadtri::view {
@@ -19,11 +20,15 @@ struct Choices {
     CreaseMethod creaseMethod = CreaseMethod::Uniform;
     FVarLinearInterpolation uvs = FVarLinearInterpolation::CornersPlus1;
     cli::EvaluatorKind evaluator = cli::EvaluatorKind::Vulkan;
+    // FactorizedLimit falls back to LevelsThenLimit where the memory budget refuses it; level 0
+    // is always the cage's own limit table.
+    realtime::TableRoute tables = realtime::TableRoute::FactorizedLimit;
 };
 
 const std::vector<BoundaryInterpolation>& allBoundaries();
 const std::vector<CreaseMethod>& allCreaseMethods();
 const std::vector<cli::EvaluatorKind>& allEvaluators();
+const std::vector<realtime::TableRoute>& allTableRoutes();
 const char* toString(cli::EvaluatorKind kind);
 const char* toString(render::Shading shading);  // as `quadtri render --shading` spells it
 

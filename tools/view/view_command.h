@@ -5,6 +5,7 @@
 #include <string>
 
 #include "tools/commands.h"
+#include "tools/realtime/surface_tables.h"
 
 namespace quadtri::view {
 
@@ -12,6 +13,7 @@ struct ViewerArgs {
     cli::MeshArgs mesh;        // the file and the flags that override its tags
     int level = 3;
     cli::EvaluatorKind evaluator = cli::EvaluatorKind::Vulkan;
+    realtime::TableRoute tables = realtime::TableRoute::FactorizedLimit;  // --tables
     std::string texture;       // PNG or JPEG for textured shading
     std::string script;        // --script FILE: run its commands, then quit
     int width = 1280, height = 800;

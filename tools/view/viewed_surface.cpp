@@ -33,13 +33,16 @@ ViewedSurface::ViewedSurface(VulkanContext& ctx, VkRenderPass renderPass, const 
     renderer_.setTexture(texture);
 }
 
-void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int level, cli::EvaluatorKind kind) {
+void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int level, cli::EvaluatorKind kind,
+                            realtime::TableRoute route) {
     auto refiner = std::make_unique<Refiner>(cli::makeRefiner(mesh, options));
     refiner->refineUniform(level);
-    // The factorized table has no level 0; where the budget refuses it, the per-level route.
+    // Level 0 has neither a factorized table nor patches; where the budget refuses the factorized
+    // table, the per-level route.
     auto tables = std::make_unique<realtime::SurfaceTables>(
         level == 0 ? realtime::SurfaceTables(*refiner, 0, realtime::TableRoute::LevelsThenLimit)
-                   : realtime::fastestSurfaceTables(*refiner, level));
+        : route == realtime::TableRoute::FactorizedLimit ? realtime::fastestSurfaceTables(*refiner, level)
+                                                          : realtime::SurfaceTables(*refiner, level, route));
     std::unique_ptr<realtime::FrameEvaluator> evaluator;
     if (kind == cli::EvaluatorKind::Vulkan)
         evaluator = std::make_unique<realtime::VulkanFrameEvaluator>(ctx_, *tables);
@@ -67,7 +70,11 @@ void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int
     tables.reset();
     refiner_ = std::move(refiner);
     level_ = level;
-    render::showLevel(renderer_, *refiner_, level, uvs.empty() ? nullptr : uvs.data());
+    // The host evaluators' read-back is in level order; the device's buffers are the table's.
+    elementOfVertex_.clear();
+    if (onDevice_ && tables_->patches) elementOfVertex_ = tables_->patches->pointOfVertex();
+    render::showLevel(renderer_, *refiner_, level, uvs.empty() ? nullptr : uvs.data(),
+                      elementOfVertex_.empty() ? nullptr : &elementOfVertex_);
     bindVertices();
     rest_ = mesh.positions;
     cage_ = rest_;
@@ -99,9 +106,14 @@ realtime::PhaseTimes ViewedSurface::update(float radians, const std::vector<std:
     if (!onDevice_ || curvature) evaluator_->readBack(positions, normals);
     if (!onDevice_) renderer_.uploadVertices(positions.data(), normals.data(), tables_->numPoints);
     if (curvature) {
-        const std::vector<float> h = render::meanCurvature(refiner_->faces(level_), positions.data(), normals.data());
-        renderer_.uploadCurvature(h);
+        std::vector<float> h = render::meanCurvature(refiner_->faces(level_), positions.data(), normals.data());
         curvatureRange_ = render::curvatureRange(h);
+        if (!elementOfVertex_.empty()) {
+            std::vector<float> atElement(h.size());
+            for (std::size_t v = 0; v < h.size(); ++v) atElement[std::size_t(elementOfVertex_[v])] = h[v];
+            h.swap(atElement);
+        }
+        renderer_.uploadCurvature(h);
     }
     const Topology& level0 = refiner_->level(0);
     std::vector<int> edges;

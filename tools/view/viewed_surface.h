@@ -22,9 +22,13 @@ public:
     ViewedSurface(VulkanContext& ctx, VkRenderPass renderPass, const render::Image* texture);
 
     // Refines `mesh` under `options` to `level` and uploads what the draw reads; the evaluator
-    // `kind` then runs each update. Throws the Refiner's errors (TopologyError, MemoryBudgetError)
+    // `kind` then runs each update through `route`'s tables. Throws the Refiner's errors (TopologyError, MemoryBudgetError)
     // and leaves the previous surface in place when it does.
-    void rebuild(const io::ObjMesh& mesh, const Options& options, int level, cli::EvaluatorKind kind);
+    void rebuild(const io::ObjMesh& mesh, const Options& options, int level, cli::EvaluatorKind kind,
+                 realtime::TableRoute route = realtime::TableRoute::FactorizedLimit);
+    // The route the tables took (the panel shows it): the one asked for, or the per-level route
+    // where the budget refused the factorized table or at level 0.
+    std::string routeDescription() const { return tables_ ? realtime::toString(tables_->route) : ""; }
     bool ready() const { return refiner_ != nullptr; }
 
     // The cage posed at `radians` (0: rest) through the evaluator into the draw's buffers, the
@@ -54,6 +58,9 @@ private:
     std::vector<uint32_t> edges_;
     int level_ = 0;
     bool onDevice_ = false;
+    // On the device under the patch route: each level vertex's element in the evaluator's
+    // buffers (the patch table's order), which the draw and the curvature follow; else empty.
+    std::vector<int> elementOfVertex_;
     float curvatureRange_ = 0.0f;  // until a curvature update
 };
 

@@ -70,6 +70,7 @@ Viewer::Viewer(const ViewerArgs& args) : args_(args) {
     choices_.uvs = args.mesh.uvInterpolation.value_or(Options().fvarLinearInterpolation);
     choices_.level = args.level;
     choices_.evaluator = args.evaluator;
+    choices_.tables = args.tables;
     view_.showCage = true;
     if (mesh.hasUVs()) view_.shading = render::Shading::Textured;
     copyInto(loadPath_, args.mesh.input);
@@ -218,7 +219,7 @@ void Viewer::rebuild() {
         for (std::size_t i = 0; i < count; ++i) {
             const Scheme scheme = i == 0 ? choices_.scheme : *choices_.compare;
             const Options options = cli::makeOptions(meshArgsOf(choices_, scheme), document_.mesh());
-            surfaces_[i]->rebuild(document_.mesh(), options, choices_.level, choices_.evaluator);
+            surfaces_[i]->rebuild(document_.mesh(), options, choices_.level, choices_.evaluator, choices_.tables);
         }
         message_.clear();
     } catch (const VulkanError&) {

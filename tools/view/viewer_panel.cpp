@@ -98,6 +98,7 @@ void Viewer::drawSurfacePanel() {
     changed |= combo("Creases", choices_.creaseMethod, allCreaseMethods());
     if (document_.mesh().hasUVs()) changed |= combo("UVs", choices_.uvs, allFVarLinearInterpolations());
     changed |= combo("Evaluator", choices_.evaluator, allEvaluators());
+    changed |= combo("Tables", choices_.tables, allTableRoutes());
     bool compare = choices_.compare.has_value();
     if (ImGui::Checkbox("Compare with", &compare)) {
         choices_.compare = compare ? std::optional<Scheme>(Scheme::CatmullClark) : std::nullopt;
@@ -162,6 +163,7 @@ void Viewer::drawTimings() {
     if (!ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::Text("%s, level %d: %d vertices", toString(choices_.evaluator), choices_.level,
                 surfaces_.empty() || !surfaces_[0]->ready() ? 0 : surfaces_[0]->refiner().faces(choices_.level).numVertices());
+    if (!surfaces_.empty() && surfaces_[0]->ready()) ImGui::Text("%s tables", surfaces_[0]->routeDescription().c_str());
     ImGui::Text("deform   %7.2f ms", times_.deformMs);
     ImGui::Text("evaluate %7.2f ms", times_.evaluateMs);
     ImGui::Text("normals  %7.2f ms", times_.normalsMs);

@@ -86,6 +86,13 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
             choices_.evaluator = namedOrFail(allEvaluators(), w[0], where, "evaluator");
             needsRebuild_ = true;
             break;
+        case ScriptVerb::Tables:
+            if (const auto route = realtime::tableRouteNamed(w[0]))
+                choices_.tables = *route;
+            else
+                throw ScriptError(where + "unknown tables '" + w[0] + "' (expected factorized, levels, patches)");
+            needsRebuild_ = true;
+            break;
         case ScriptVerb::Deform: deform_ = onOff(w[0], where); needsUpdate_ = true; break;
         case ScriptVerb::Camera:
             view_.camera.yawDegrees = float(command.numbers[0]);

@@ -26,6 +26,7 @@ const std::map<std::string, Form>& forms() {
         {"compare", {ScriptVerb::Compare, "w"}},           {"boundary", {ScriptVerb::Boundary, "w"}},
         {"crease-method", {ScriptVerb::CreaseMethod, "w"}}, {"uvs", {ScriptVerb::UVs, "w"}},
         {"shading", {ScriptVerb::Shading, "w"}},           {"evaluator", {ScriptVerb::Evaluator, "w"}},
+        {"tables", {ScriptVerb::Tables, "w"}},
         {"deform", {ScriptVerb::Deform, "w"}},             {"camera", {ScriptVerb::Camera, "nn"}},
         {"frames", {ScriptVerb::Frames, "i"}},             {"load", {ScriptVerb::Load, "w"}},
         {"save", {ScriptVerb::Save, "w"}},                 {"texture", {ScriptVerb::Texture, "w"}},                 {"screenshot", {ScriptVerb::Screenshot, "w"}},

@@ -33,6 +33,7 @@ enum class ScriptVerb {
     UVs,           // uvs NAME (a face-varying option, e.g. corners-plus1)
     Shading,       // shading smooth|flat|reflection-lines|mean-curvature|face-type|textured
     Evaluator,     // evaluator cpu|tbb|vulkan
+    Tables,        // tables factorized|levels|patches (the frame's table route)
     Deform,        // deform on|off
     Camera,        // camera YAW PITCH (degrees)
     Frames,        // frames N: render N more frames
