@@ -314,6 +314,28 @@ TEST(Viewer, ThePatchRouteDrawsTheSamePicture) {
     EXPECT_GT(changedPixels(images[2], images[3]), kWidth * kHeight / 20);  // the shading did change
 }
 
+// Adaptive tessellation: at a few pixels per segment it draws what the uniform level draws
+// (reflection lines: any difference in positions or normals shows), at hundreds (every edge one
+// segment: the base faces' flat triangles) something else; off again, the level comes back.
+TEST(Viewer, AdaptiveTessellationFollowsItsTarget) {
+    SKIP_WITHOUT_XVFB();
+    std::vector<std::string> shots;
+    for (const char* name : {"level", "fine", "coarse", "level_again"}) shots.push_back(work(std::string(name) + ".png"));
+    const Outcome r = view(kTorus, "shading reflection-lines\nscreenshot " + shots[0] +
+                                       "\nadaptive on\nsegment-pixels 3\nscreenshot " + shots[1] +
+                                       "\nsegment-pixels 500\nscreenshot " + shots[2] +
+                                       "\nadaptive off\nscreenshot " + shots[3] + "\nquit\n");
+    SKIP_WITHOUT_DEVICE(r);
+    ASSERT_EQ(r.status, 0) << r.errors;
+    EXPECT_EQ(r.errors.find("alidation"), std::string::npos) << r.errors;
+    std::vector<render::Image> images;
+    for (const std::string& shot : shots) images.push_back(render::readImage(shot));
+    const int fine = changedPixels(images[0], images[1]), coarse = changedPixels(images[0], images[2]);
+    EXPECT_LT(fine, kWidth * kHeight / 100);
+    EXPECT_GT(coarse, 5 * fine + kWidth * kHeight / 100);
+    EXPECT_EQ(changedPixels(images[0], images[3]), 0);
+}
+
 TEST(Viewer, ALoadedTextureReplacesTheChecker) {
     SKIP_WITHOUT_XVFB();
     // A cube with UVs, textured with the checker, then with the checker's own screenshot.

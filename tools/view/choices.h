@@ -23,6 +23,10 @@ struct Choices {
     // FactorizedLimit falls back to LevelsThenLimit where the memory budget refuses it; level 0
     // is always the cage's own limit table.
     realtime::TableRoute tables = realtime::TableRoute::FactorizedLimit;
+    // Adaptive tessellation instead of the level: a rate per cage edge, its projected length over
+    // this many pixels (ViewedSurface::adapt).
+    bool adaptive = false;
+    float pixelsPerSegment = 12.0f;
 };
 
 const std::vector<BoundaryInterpolation>& allBoundaries();

@@ -1,6 +1,11 @@
 #include "tools/view/viewed_surface.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+
+#include <quadtri/osd/cpu_evaluator.h>
+#include <quadtri/osd/tbb_evaluator.h>
 
 #include "tools/realtime/host_frame_evaluator.h"
 #include "tools/realtime/vulkan_frame_evaluator.h"
@@ -70,6 +75,10 @@ void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int
     tables.reset();
     refiner_ = std::move(refiner);
     level_ = level;
+    kind_ = kind;
+    limitSurface_.reset();
+    tessellation_.reset();
+    edgeRates_.clear();
     // The host evaluators' read-back is in level order; the device's buffers are the table's.
     elementOfVertex_.clear();
     if (onDevice_ && tables_->patches) elementOfVertex_ = tables_->patches->pointOfVertex();
@@ -89,6 +98,53 @@ void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int
     edges_.assign(level0.edgeVerts.begin(), level0.edgeVerts.begin() + 2 * std::ptrdiff_t(level0.numEdges()));
 }
 
+bool ViewedSurface::adapt(const render::ViewSettings& view, VkExtent2D extent, float pixelsPerSegment) {
+    if (!ready()) return false;
+    if (!limitSurface_) limitSurface_ = std::make_unique<LimitSurface>(*refiner_);
+    const Topology& base = limitSurface_->topology();
+    std::vector<int> rates(std::size_t(base.numEdges()), 1);
+    for (int e = 0; e < base.numEdges(); ++e) {
+        const float* a = &rest_[3 * std::size_t(base.edgeVerts[2 * std::size_t(e)])];
+        const float* b = &rest_[3 * std::size_t(base.edgeVerts[2 * std::size_t(e) + 1])];
+        const glm::vec3 p = render::toPixel(view, extent, {a[0], a[1], a[2]});
+        const glm::vec3 q = render::toPixel(view, extent, {b[0], b[1], b[2]});
+        if (p.z <= 0.0f || q.z <= 0.0f) continue;  // behind the eye
+        const float segments = std::hypot(p.x - q.x, p.y - q.y) / std::max(pixelsPerSegment, 1e-3f);
+        int rate = 1;
+        while (rate < kMaxAdaptiveRate && float(rate) < segments) rate *= 2;
+        rates[std::size_t(e)] = rate;
+    }
+    if (tessellation_ && rates == edgeRates_) return false;
+    auto tessellation = std::make_unique<Tessellation>(*limitSurface_, rates);
+    LimitStencilTable table = limitSurface_->stencilTable(tessellation->numPoints(), tessellation->faces(),
+                                                          tessellation->u(), tessellation->v());
+    DrawBuffers draw;
+    draw.triangles.assign(tessellation->triangles().begin(), tessellation->triangles().end());
+    draw.vertexOf.resize(std::size_t(tessellation->numPoints()));
+    for (std::size_t k = 0; k < draw.vertexOf.size(); ++k) draw.vertexOf[k] = int(k);
+    draw.numLevelVertices = tessellation->numPoints();
+    std::vector<uint32_t> origins;
+    for (int f : tessellation->triangleFaces()) {
+        const int n = base.faceSize(f);
+        origins.push_back(n == 3 ? render::kFromTriangle : n == 4 ? render::kFromQuad : render::kFromOtherPolygon);
+    }
+    renderer_.setSurface(draw, nullptr, origins);
+    tessellation_ = std::move(tessellation);
+    tessellationTable_ = std::move(table);
+    edgeRates_ = std::move(rates);
+    tessellationPositions_.assign(3 * std::size_t(tessellation_->numPoints()), 0.0f);
+    tessellationNormals_ = tessellationPositions_;
+    renderer_.uploadVertices(tessellationPositions_.data(), tessellationNormals_.data(), tessellation_->numPoints());
+    return true;
+}
+
+std::string ViewedSurface::adaptiveSummary() const {
+    if (!tessellation_) return "";
+    const auto [low, high] = std::minmax_element(edgeRates_.begin(), edgeRates_.end());
+    return "rates " + std::to_string(edgeRates_.empty() ? 0 : *low) + "-" + std::to_string(edgeRates_.empty() ? 0 : *high) +
+           " per edge, " + std::to_string(tessellation_->numTriangles()) + " triangles";
+}
+
 realtime::PhaseTimes ViewedSurface::update(float radians, const std::vector<std::pair<int, int>>& selectedEdges,
                                            const std::vector<int>& selectedVertices, bool curvature) {
     realtime::PhaseTimes times;
@@ -98,6 +154,20 @@ realtime::PhaseTimes ViewedSurface::update(float radians, const std::vector<std:
         skin_->pose(radians, cage_.data());
     else
         cage_ = rest_;
+    if (tessellation_) {
+        times.deformMs = msSince(start);
+        const Clock::time_point evaluation = Clock::now();
+        const BufferDescriptor xyz(0, 3, 3);
+        auto limit = kind_ == cli::EvaluatorKind::Cpu ? CpuEvaluator::EvalLimitStencils : TbbEvaluator::EvalLimitStencils;
+        if (tessellationTable_.numStencils() > 0)
+            limit(cage_.data(), xyz, tessellationPositions_.data(), xyz, nullptr, xyz, nullptr, xyz,
+                  tessellationNormals_.data(), xyz, tessellationTable_, nullptr, 0, -1);
+        times.evaluateMs = msSince(evaluation);
+        renderer_.uploadVertices(tessellationPositions_.data(), tessellationNormals_.data(), tessellation_->numPoints());
+        curvatureRange_ = 0.0f;  // no mean curvature on a tessellation
+        showCage(selectedEdges, selectedVertices);
+        return times;
+    }
     evaluator_->setCage(cage_.data());
     times.deformMs = msSince(start);
     evaluator_->evaluate(times);
@@ -115,11 +185,16 @@ realtime::PhaseTimes ViewedSurface::update(float radians, const std::vector<std:
         }
         renderer_.uploadCurvature(h);
     }
+    showCage(selectedEdges, selectedVertices);
+    return times;
+}
+
+void ViewedSurface::showCage(const std::vector<std::pair<int, int>>& selectedEdges,
+                             const std::vector<int>& selectedVertices) {
     const Topology& level0 = refiner_->level(0);
     std::vector<int> edges;
     for (const auto& [a, b] : selectedEdges) edges.push_back(edgeBetween(level0, a, b));
     renderer_.setCage(render::cageOf(level0, cage_.data(), edges, selectedVertices));
-    return times;
 }
 
 }  // namespace quadtri::view

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include <quadtri/far/limit_surface.h>
 #include <quadtri/far/refiner.h>
+#include <quadtri/far/tessellation.h>
 #include "tools/commands.h"
 #include "tools/realtime/frame_evaluator.h"
 #include "tools/realtime/surface_tables.h"
@@ -37,6 +39,18 @@ public:
     realtime::PhaseTimes update(float radians, const std::vector<std::pair<int, int>>& selectedEdges,
                                 const std::vector<int>& selectedVertices, bool curvature);
 
+    // Adaptive tessellation (docs/viewer.md): instead of the uniform level, every base face cut
+    // at a rate per edge, the cage edge's projected length (at rest: the bend does not change
+    // the rates) in `extent` under `view` over
+    // `pixelsPerSegment`, rounded up to a power of two (1 to kMaxAdaptiveRate), evaluated on the
+    // host. Rebuilds the tessellation and its stencil table where a rate changed; returns whether
+    // it did (the next update evaluates it). A rebuild goes back to the level.
+    static constexpr int kMaxAdaptiveRate = 64;
+    bool adapt(const render::ViewSettings& view, VkExtent2D extent, float pixelsPerSegment);
+    bool adaptive() const { return tessellation_ != nullptr; }
+    // "rates 1-16 per edge, 123456 triangles" while adaptive, else empty.
+    std::string adaptiveSummary() const;
+
     render::Renderer& renderer() { return renderer_; }
     const Refiner& refiner() const { return *refiner_; }
     // The cage as posed by the last update (3 floats per vertex), and its edges (2 per edge).
@@ -47,6 +61,9 @@ public:
     const std::string& skinProblem() const { return skinProblem_; }
 
 private:
+    // The posed cage with the selection's colours.
+    void showCage(const std::vector<std::pair<int, int>>& selectedEdges, const std::vector<int>& selectedVertices);
+
     VulkanContext& ctx_;
     render::Renderer renderer_;
     std::unique_ptr<Refiner> refiner_;
@@ -58,6 +75,14 @@ private:
     std::vector<uint32_t> edges_;
     int level_ = 0;
     bool onDevice_ = false;
+    // Adaptive tessellation: the surface (made on first use), the rates, the tessellation, its
+    // stencils over the cage, and the evaluated points.
+    std::unique_ptr<LimitSurface> limitSurface_;
+    std::vector<int> edgeRates_;
+    std::unique_ptr<Tessellation> tessellation_;
+    LimitStencilTable tessellationTable_;
+    std::vector<float> tessellationPositions_, tessellationNormals_;
+    cli::EvaluatorKind kind_ = cli::EvaluatorKind::Cpu;
     // On the device under the patch route: each level vertex's element in the evaluator's
     // buffers (the patch table's order), which the draw and the curvature follow; else empty.
     std::vector<int> elementOfVertex_;

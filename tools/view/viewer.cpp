@@ -241,6 +241,9 @@ void Viewer::frame(render::Image* screenshot, bool withPanel) {
     if (deform_) motionSeconds_ += (now - lastFrameTime_) * double(speed_);
     lastFrameTime_ = now;
     const bool curvature = view_.shading == render::Shading::MeanCurvature;
+    if (choices_.adaptive)
+        for (int i = 0; i < viewportCount() && std::size_t(i) < surfaces_.size(); ++i)
+            needsUpdate_ |= surfaces_[std::size_t(i)]->adapt(view_, viewport(i).extent, choices_.pixelsPerSegment);
     if (deform_ || needsUpdate_) {
         const float angle = deform_ ? realtime::bendAngle(motionSeconds_) : 0.0f;
         times_ = {};

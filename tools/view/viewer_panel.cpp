@@ -99,6 +99,8 @@ void Viewer::drawSurfacePanel() {
     if (document_.mesh().hasUVs()) changed |= combo("UVs", choices_.uvs, allFVarLinearInterpolations());
     changed |= combo("Evaluator", choices_.evaluator, allEvaluators());
     changed |= combo("Tables", choices_.tables, allTableRoutes());
+    changed |= ImGui::Checkbox("Adaptive tessellation", &choices_.adaptive);
+    if (choices_.adaptive) ImGui::SliderFloat("Pixels per segment", &choices_.pixelsPerSegment, 2.0f, 64.0f, "%.0f");
     bool compare = choices_.compare.has_value();
     if (ImGui::Checkbox("Compare with", &compare)) {
         choices_.compare = compare ? std::optional<Scheme>(Scheme::CatmullClark) : std::nullopt;
@@ -161,9 +163,17 @@ void Viewer::drawSelectionPanel() {
 
 void Viewer::drawTimings() {
     if (!ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    ImGui::Text("%s, level %d: %d vertices", toString(choices_.evaluator), choices_.level,
-                surfaces_.empty() || !surfaces_[0]->ready() ? 0 : surfaces_[0]->refiner().faces(choices_.level).numVertices());
-    if (!surfaces_.empty() && surfaces_[0]->ready()) ImGui::Text("%s tables", surfaces_[0]->routeDescription().c_str());
+    const bool ready = !surfaces_.empty() && surfaces_[0]->ready();
+    if (ready && surfaces_[0]->adaptive()) {
+        ImGui::Text("%s (host), adaptive tessellation:", toString(choices_.evaluator == cli::EvaluatorKind::Cpu
+                                                                       ? cli::EvaluatorKind::Cpu
+                                                                       : cli::EvaluatorKind::Tbb));
+        ImGui::Text("%s", surfaces_[0]->adaptiveSummary().c_str());
+    } else {
+        ImGui::Text("%s, level %d: %d vertices", toString(choices_.evaluator), choices_.level,
+                    ready ? surfaces_[0]->refiner().faces(choices_.level).numVertices() : 0);
+        if (ready) ImGui::Text("%s tables", surfaces_[0]->routeDescription().c_str());
+    }
     ImGui::Text("deform   %7.2f ms", times_.deformMs);
     ImGui::Text("evaluate %7.2f ms", times_.evaluateMs);
     ImGui::Text("normals  %7.2f ms", times_.normalsMs);

@@ -93,6 +93,14 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
                 throw ScriptError(where + "unknown tables '" + w[0] + "' (expected factorized, levels, patches)");
             needsRebuild_ = true;
             break;
+        case ScriptVerb::Adaptive:
+            choices_.adaptive = onOff(w[0], where);
+            needsRebuild_ = true;
+            break;
+        case ScriptVerb::SegmentPixels:
+            if (!(command.numbers[0] > 0)) throw ScriptError(where + "segment-pixels must be above 0");
+            choices_.pixelsPerSegment = float(command.numbers[0]);
+            break;
         case ScriptVerb::Deform: deform_ = onOff(w[0], where); needsUpdate_ = true; break;
         case ScriptVerb::Camera:
             view_.camera.yawDegrees = float(command.numbers[0]);

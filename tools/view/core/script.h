@@ -34,6 +34,8 @@ enum class ScriptVerb {
     Shading,       // shading smooth|flat|reflection-lines|mean-curvature|face-type|textured
     Evaluator,     // evaluator cpu|tbb|vulkan
     Tables,        // tables factorized|levels|patches (the frame's table route)
+    Adaptive,      // adaptive on|off: adaptive tessellation instead of the level
+    SegmentPixels, // segment-pixels N: the adaptive tessellation's target, pixels per segment (> 0)
     Deform,        // deform on|off
     Camera,        // camera YAW PITCH (degrees)
     Frames,        // frames N: render N more frames
