@@ -315,16 +315,20 @@ TEST(Viewer, ThePatchRouteDrawsTheSamePicture) {
 }
 
 // Adaptive tessellation: at a few pixels per segment it draws what the uniform level draws
-// (reflection lines: any difference in positions or normals shows), at hundreds (every edge one
-// segment: the base faces' flat triangles) something else; off again, the level comes back.
+// (reflection lines: any difference in positions or normals shows), on the device and on the CPU,
+// at hundreds (every edge one segment: the base faces' flat triangles) something else; off
+// again, the level comes back.
 TEST(Viewer, AdaptiveTessellationFollowsItsTarget) {
     SKIP_WITHOUT_XVFB();
     std::vector<std::string> shots;
-    for (const char* name : {"level", "fine", "coarse", "level_again"}) shots.push_back(work(std::string(name) + ".png"));
+    for (const char* name : {"level", "fine", "coarse", "level_again", "fine_cpu"})
+        shots.push_back(work(std::string(name) + ".png"));
     const Outcome r = view(kTorus, "shading reflection-lines\nscreenshot " + shots[0] +
                                        "\nadaptive on\nsegment-pixels 3\nscreenshot " + shots[1] +
                                        "\nsegment-pixels 500\nscreenshot " + shots[2] +
-                                       "\nadaptive off\nscreenshot " + shots[3] + "\nquit\n");
+                                       "\nadaptive off\nscreenshot " + shots[3] +
+                                       "\nevaluator cpu\nadaptive on\nsegment-pixels 3\nscreenshot " + shots[4] +
+                                       "\nquit\n");
     SKIP_WITHOUT_DEVICE(r);
     ASSERT_EQ(r.status, 0) << r.errors;
     EXPECT_EQ(r.errors.find("alidation"), std::string::npos) << r.errors;
@@ -334,6 +338,7 @@ TEST(Viewer, AdaptiveTessellationFollowsItsTarget) {
     EXPECT_LT(fine, kWidth * kHeight / 100);
     EXPECT_GT(coarse, 5 * fine + kWidth * kHeight / 100);
     EXPECT_EQ(changedPixels(images[0], images[3]), 0);
+    EXPECT_LT(changedPixels(images[1], images[4]), kWidth * kHeight / 1000);  // the device's, the CPU's
 }
 
 TEST(Viewer, ALoadedTextureReplacesTheChecker) {

@@ -78,6 +78,7 @@ void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int
     kind_ = kind;
     limitSurface_.reset();
     tessellation_.reset();
+    deviceTessellation_.reset();
     edgeRates_.clear();
     // The host evaluators' read-back is in level order; the device's buffers are the table's.
     elementOfVertex_.clear();
@@ -128,13 +129,26 @@ bool ViewedSurface::adapt(const render::ViewSettings& view, VkExtent2D extent, f
         const int n = base.faceSize(f);
         origins.push_back(n == 3 ? render::kFromTriangle : n == 4 ? render::kFromQuad : render::kFromOtherPolygon);
     }
+    const int n = tessellation->numPoints();
+    std::unique_ptr<DeviceTessellation> device;
+    if (onDevice_) {
+        if (!limitEvaluator_) limitEvaluator_ = std::make_unique<VulkanLimitEvaluator>(ctx_);
+        device.reset(new DeviceTessellation{VulkanLimitStencilTable(ctx_, table),
+                                            VulkanVertexBuffer::create(ctx_, int(rest_.size() / 3), 3),
+                                            VulkanVertexBuffer::create(ctx_, n, 3), VulkanVertexBuffer::create(ctx_, n, 3)});
+    }
+    // The renderer lets go of the old buffers before they go.
     renderer_.setSurface(draw, nullptr, origins);
     tessellation_ = std::move(tessellation);
     tessellationTable_ = std::move(table);
     edgeRates_ = std::move(rates);
-    tessellationPositions_.assign(3 * std::size_t(tessellation_->numPoints()), 0.0f);
+    deviceTessellation_ = std::move(device);
+    tessellationPositions_.assign(3 * std::size_t(n), 0.0f);
     tessellationNormals_ = tessellationPositions_;
-    renderer_.uploadVertices(tessellationPositions_.data(), tessellationNormals_.data(), tessellation_->numPoints());
+    if (deviceTessellation_)
+        renderer_.useVertexBuffers({deviceTessellation_->positions.buffer(), 0}, {deviceTessellation_->normals.buffer(), 0});
+    else
+        renderer_.uploadVertices(tessellationPositions_.data(), tessellationNormals_.data(), n);
     return true;
 }
 
@@ -158,12 +172,19 @@ realtime::PhaseTimes ViewedSurface::update(float radians, const std::vector<std:
         times.deformMs = msSince(start);
         const Clock::time_point evaluation = Clock::now();
         const BufferDescriptor xyz(0, 3, 3);
-        auto limit = kind_ == cli::EvaluatorKind::Cpu ? CpuEvaluator::EvalLimitStencils : TbbEvaluator::EvalLimitStencils;
-        if (tessellationTable_.numStencils() > 0)
-            limit(cage_.data(), xyz, tessellationPositions_.data(), xyz, nullptr, xyz, nullptr, xyz,
-                  tessellationNormals_.data(), xyz, tessellationTable_, nullptr, 0, -1);
-        times.evaluateMs = msSince(evaluation);
-        renderer_.uploadVertices(tessellationPositions_.data(), tessellationNormals_.data(), tessellation_->numPoints());
+        if (DeviceTessellation* d = deviceTessellation_.get()) {
+            d->cage.updateData(cage_.data(), 0, int(cage_.size() / 3));
+            limitEvaluator_->EvalLimitStencilsAndWait(d->cage, xyz, &d->positions, xyz, nullptr, xyz, nullptr, xyz,
+                                                      &d->normals, xyz, d->table);
+            times.evaluateMs = msSince(evaluation);
+        } else {
+            auto limit = kind_ == cli::EvaluatorKind::Cpu ? CpuEvaluator::EvalLimitStencils : TbbEvaluator::EvalLimitStencils;
+            if (tessellationTable_.numStencils() > 0)
+                limit(cage_.data(), xyz, tessellationPositions_.data(), xyz, nullptr, xyz, nullptr, xyz,
+                      tessellationNormals_.data(), xyz, tessellationTable_, nullptr, 0, -1);
+            times.evaluateMs = msSince(evaluation);
+            renderer_.uploadVertices(tessellationPositions_.data(), tessellationNormals_.data(), tessellation_->numPoints());
+        }
         curvatureRange_ = 0.0f;  // no mean curvature on a tessellation
         showCage(selectedEdges, selectedVertices);
         return times;

@@ -11,6 +11,9 @@
 #include <quadtri/far/limit_surface.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/far/tessellation.h>
+#include <quadtri/osd/vulkan_buffer.h>
+#include <quadtri/osd/vulkan_limit_evaluator.h>
+#include <quadtri/osd/vulkan_limit_tables.h>
 #include "tools/commands.h"
 #include "tools/realtime/frame_evaluator.h"
 #include "tools/realtime/surface_tables.h"
@@ -42,9 +45,10 @@ public:
     // Adaptive tessellation (docs/viewer.md): instead of the uniform level, every base face cut
     // at a rate per edge, the cage edge's projected length (at rest: the bend does not change
     // the rates) in `extent` under `view` over
-    // `pixelsPerSegment`, rounded up to a power of two (1 to kMaxAdaptiveRate), evaluated on the
-    // host. Rebuilds the tessellation and its stencil table where a rate changed; returns whether
-    // it did (the next update evaluates it). A rebuild goes back to the level.
+    // `pixelsPerSegment`, rounded up to a power of two (1 to kMaxAdaptiveRate), evaluated by the
+    // surface's evaluator (on the device, into the buffers the draw reads). Rebuilds the
+    // tessellation and its stencil table where a rate changed; returns whether it did (the next
+    // update evaluates it). A rebuild goes back to the level.
     static constexpr int kMaxAdaptiveRate = 64;
     bool adapt(const render::ViewSettings& view, VkExtent2D extent, float pixelsPerSegment);
     bool adaptive() const { return tessellation_ != nullptr; }
@@ -82,6 +86,13 @@ private:
     std::unique_ptr<Tessellation> tessellation_;
     LimitStencilTable tessellationTable_;
     std::vector<float> tessellationPositions_, tessellationNormals_;
+    // The same on the device: the cage, the table and the outputs the draw reads.
+    struct DeviceTessellation {
+        VulkanLimitStencilTable table;
+        VulkanVertexBuffer cage, positions, normals;
+    };
+    std::unique_ptr<DeviceTessellation> deviceTessellation_;
+    std::unique_ptr<VulkanLimitEvaluator> limitEvaluator_;  // made on first use
     cli::EvaluatorKind kind_ = cli::EvaluatorKind::Cpu;
     // On the device under the patch route: each level vertex's element in the evaluator's
     // buffers (the patch table's order), which the draw and the curvature follow; else empty.

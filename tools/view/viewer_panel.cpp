@@ -165,9 +165,7 @@ void Viewer::drawTimings() {
     if (!ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const bool ready = !surfaces_.empty() && surfaces_[0]->ready();
     if (ready && surfaces_[0]->adaptive()) {
-        ImGui::Text("%s (host), adaptive tessellation:", toString(choices_.evaluator == cli::EvaluatorKind::Cpu
-                                                                       ? cli::EvaluatorKind::Cpu
-                                                                       : cli::EvaluatorKind::Tbb));
+        ImGui::Text("%s, adaptive tessellation:", toString(choices_.evaluator));
         ImGui::Text("%s", surfaces_[0]->adaptiveSummary().c_str());
     } else {
         ImGui::Text("%s, level %d: %d vertices", toString(choices_.evaluator), choices_.level,
