@@ -12,12 +12,12 @@ layout(constant_id = 1) const int SRC_STRIDE = 3;
 layout(constant_id = 2) const int POSITION_STRIDE = 3;
 layout(constant_id = 3) const int NORMAL_STRIDE = 3;
 layout(constant_id = 4) const int OUTPUTS = 3;  // bits: position, normal
-// Whether the source is read through the texel buffer of binding 10 (the caller gave a view;
+// Whether the source is read through the texel buffer of binding 9 (the caller gave a view;
 // lavapipe turns a texel fetch into a vector gather, a storage-buffer load into a branch per
 // lane: docs/architecture.md, "Vulkan on lavapipe").
 layout(constant_id = 5) const bool SOURCE_TEXELS = false;
 // Whether patchPoints, outputCells and boxSplineWeights are read through the texel buffers of
-// bindings 11-13 (the table has views: its arrays are within the device's texel limit).
+// bindings 10-12 (the table has views: its arrays are within the device's texel limit).
 layout(constant_id = 6) const bool TABLE_TEXELS = false;
 
 const float DEGENERATE_SINE = 1e-4;
@@ -30,18 +30,15 @@ layout(std430, set = 0, binding = 2) readonly buffer PatchPoints { int patchPoin
 layout(std430, set = 0, binding = 3) readonly buffer OutputOffsets { int outputOffsets[]; };
 // Two 16-bit cells i + 256 j per word, output o in the low half when o is even.
 layout(std430, set = 0, binding = 4) readonly buffer OutputCells { uint outputCells[]; };
-// Per grid line the cubic B-spline's 4 weights, then their 4 derivatives (bound, not read: the
-// shader computes them).
-layout(std430, set = 0, binding = 5) readonly buffer CurveWeights { float curveWeights[]; };
 // Per cell j (rate + 1) + i, per point: the weights of the position, d/ds and d/dt.
-layout(std430, set = 0, binding = 6) readonly buffer BoxSplineWeights { float boxSplineWeights[]; };
-layout(std430, set = 0, binding = 7) readonly buffer Src { float src[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer Position { float position[]; };
-layout(std430, set = 0, binding = 9) writeonly buffer Normal { float normal[]; };
-layout(set = 0, binding = 10) uniform samplerBuffer srcTexels;  // pc.srcOffset counts from its texel 0
-layout(set = 0, binding = 11) uniform isamplerBuffer pointTexels;
-layout(set = 0, binding = 12) uniform usamplerBuffer cellTexels;
-layout(set = 0, binding = 13) uniform samplerBuffer boxTexels;
+layout(std430, set = 0, binding = 5) readonly buffer BoxSplineWeights { float boxSplineWeights[]; };
+layout(std430, set = 0, binding = 6) readonly buffer Src { float src[]; };
+layout(std430, set = 0, binding = 7) writeonly buffer Position { float position[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer Normal { float normal[]; };
+layout(set = 0, binding = 9) uniform samplerBuffer srcTexels;  // pc.srcOffset counts from its texel 0
+layout(set = 0, binding = 10) uniform isamplerBuffer pointTexels;
+layout(set = 0, binding = 11) uniform usamplerBuffer cellTexels;
+layout(set = 0, binding = 12) uniform samplerBuffer boxTexels;
 
 layout(push_constant) uniform Push {
     uint srcOffset;  // floats before element 0 in each bound range
@@ -55,7 +52,7 @@ layout(push_constant) uniform Push {
 } pc;
 
 // The cubic B-spline's 4 weights at t in [0, 1] and their derivatives (the table's curveWeights,
-// computed here: arithmetic is cheaper than a load per lane).
+// which are not uploaded: arithmetic is cheaper than a load per lane).
 void cubicBSpline(float t, out vec4 w, out vec4 dw) {
     const float r = 1.0 - t, t2 = t * t, t3 = t2 * t;
     w = vec4(r * r * r, 3.0 * t3 - 6.0 * t2 + 4.0, -3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0, t3) * (1.0 / 6.0);

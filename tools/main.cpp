@@ -227,9 +227,7 @@ void addRenderFlags(CLI::App& cmd, cli::RenderArgs& args, const std::map<std::st
 const std::map<std::string, realtime::TableRoute>& tableRoutes() {
     static const std::map<std::string, realtime::TableRoute> routes = [] {
         std::map<std::string, realtime::TableRoute> named;
-        for (auto route : {realtime::TableRoute::FactorizedLimit, realtime::TableRoute::LevelsThenLimit,
-                           realtime::TableRoute::Patches})
-            named[realtime::tablesWord(route)] = route;
+        for (realtime::TableRoute route : realtime::allTableRoutes()) named[realtime::tablesWord(route)] = route;
         return named;
     }();
     return routes;

@@ -36,11 +36,12 @@ const std::vector<VkDescriptorType> kLimitBindings = {kStorage, kStorage, kStora
 constexpr uint32_t kLimitPushWords = 7;  // 5 float offsets, start, end
 const std::vector<VkDescriptorType> kNormalBindings(6, kStorage);  // table (4), source, destination
 constexpr uint32_t kNormalPushWords = 4;
-// the patch table (7), source, position, normal, then the source and three of the table's arrays
+// the patch table (6), source, position, normal, then the source and three of the table's arrays
 // as texel buffers (shaders/level_patches.comp)
-const std::vector<VkDescriptorType> kPatchBindings = {kStorage, kStorage, kStorage, kStorage, kStorage, kStorage,
+const std::vector<VkDescriptorType> kPatchBindings = {kStorage, kStorage, kStorage, kStorage, kStorage,
                                                       kStorage, kStorage, kStorage, kStorage, kTexels,
                                                       kTexels,  kTexels,  kTexels};
+constexpr std::size_t kFirstPatchTexelBinding = 9;  // the source, then the table's three
 constexpr uint32_t kPatchPushWords = 8;  // 3 float offsets, rate, patches per workgroup, patches, start, end
 
 // Floats needed to hold `count` elements of `d` (0 when count is 0).
@@ -295,10 +296,10 @@ void VulkanLimitEvaluator::recordPatches(VkCommandBuffer cmd, bool waited, const
         words.push_back(uint32_t(perGroup));
         words.push_back(uint32_t(table.numPatches()));
         std::vector<VkBufferView> texels(kPatchBindings.size(), VK_NULL_HANDLE);
-        texels[10] = source.texels ? src.texels : kernels_->unused.floatTexels.view();
-        texels[11] = tableTexels ? table.texels()[0] : kernels_->unused.indexTexels.view();
-        texels[12] = tableTexels ? table.texels()[1] : kernels_->unused.uintTexels.view();
-        texels[13] = tableTexels ? table.texels()[2] : kernels_->unused.floatTexels.view();
+        texels[kFirstPatchTexelBinding] = source.texels ? src.texels : kernels_->unused.floatTexels.view();
+        texels[kFirstPatchTexelBinding + 1] = tableTexels ? table.texels()[0] : kernels_->unused.indexTexels.view();
+        texels[kFirstPatchTexelBinding + 2] = tableTexels ? table.texels()[1] : kernels_->unused.uintTexels.view();
+        texels[kFirstPatchTexelBinding + 3] = tableTexels ? table.texels()[2] : kernels_->unused.floatTexels.view();
         kernels_->patches.record(cmd, arena, infos, constants, words, 0, int(invocations), texels);
     }
     if (table.stencils().numStencils() == 0) return;

@@ -80,7 +80,7 @@ VulkanMeshNormalTable::VulkanMeshNormalTable(VulkanMeshNormalTable&&) noexcept =
 VulkanMeshNormalTable& VulkanMeshNormalTable::operator=(VulkanMeshNormalTable&&) noexcept = default;
 
 struct VulkanLevelPatchTable::Arrays {
-    detail::DeviceBuffer buffers[7];
+    detail::DeviceBuffer buffers[6];
     detail::TexelView texels[3];
 };
 
@@ -107,18 +107,18 @@ VulkanLevelPatchTable::VulkanLevelPatchTable(VulkanContext& ctx, const LevelPatc
     auto bytesOf = [](const auto& v) { return v.size() * sizeof(v[0]); };
     uploadAll(ctx, arrays_->buffers,
               {basis.data(), t.pointOffsets.data(), t.patchPoints.data(), t.outputOffsets.data(), cells.data(),
-               t.curveWeights.data(), t.boxSplineWeights.data()},
+               t.boxSplineWeights.data()},
               {bytesOf(basis), bytesOf(t.pointOffsets), bytesOf(t.patchPoints), bytesOf(t.outputOffsets), bytesOf(cells),
-               bytesOf(t.curveWeights), bytesOf(t.boxSplineWeights)},
+               bytesOf(t.boxSplineWeights)},
               VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    for (int k = 0; k < 7; ++k) handles_[k] = arrays_->buffers[k].buffer();
+    for (int k = 0; k < 6; ++k) handles_[k] = arrays_->buffers[k].buffer();
     // Texel views only where the device's limit allows them: the shader reads the storage
     // buffers otherwise.
     const std::size_t limit = ctx.texelBufferLimit();
     if (t.patchPoints.size() <= limit && cells.size() / 2 <= limit && t.boxSplineWeights.size() <= limit) {
         arrays_->texels[0] = detail::TexelView(ctx, arrays_->buffers[2], VK_FORMAT_R32_SINT);
         arrays_->texels[1] = detail::TexelView(ctx, arrays_->buffers[4], VK_FORMAT_R32_UINT);
-        arrays_->texels[2] = detail::TexelView(ctx, arrays_->buffers[6], VK_FORMAT_R32_SFLOAT);
+        arrays_->texels[2] = detail::TexelView(ctx, arrays_->buffers[5], VK_FORMAT_R32_SFLOAT);
         for (int k = 0; k < 3; ++k) texelHandles_[k] = arrays_->texels[k].view();
     }
 }

@@ -52,9 +52,10 @@ private:
     std::unique_ptr<Arrays> arrays_;
 };
 
-// A LevelPatchTable (Refiner::levelPatches; docs/patches.md) uploaded once: its patches' seven
-// arrays for shaders/level_patches.comp (the grid cells two to a 32-bit word, as the host's
-// 16-bit array lies in memory) and its stencils as a VulkanLimitStencilTable.
+// A LevelPatchTable (Refiner::levelPatches; docs/patches.md) uploaded once: its patches' arrays
+// for shaders/level_patches.comp (the grid cells two to a 32-bit word, as the host's 16-bit
+// array lies in memory; not curveWeights, which the shader computes) and its stencils as a
+// VulkanLimitStencilTable.
 class QUADTRI_API VulkanLevelPatchTable {
 public:
     // Copies the arrays through one staging buffer (waits); std::invalid_argument when they are
@@ -71,9 +72,9 @@ public:
     int numPatches() const { return numPatches_; }
     int numPatchOutputs() const { return numPatchOutputs_; }
     int rate() const { return rate_; }
-    // patchBasis (as int), pointOffsets, patchPoints, outputOffsets, outputCells, curveWeights,
+    // patchBasis (as int), pointOffsets, patchPoints, outputOffsets, outputCells and
     // boxSplineWeights, as the shader binds them.
-    const VkBuffer (&buffers() const)[7] { return handles_; }
+    const VkBuffer (&buffers() const)[6] { return handles_; }
     // patchPoints, outputCells and boxSplineWeights as uniform texel buffers (R32_SINT, R32_UINT,
     // R32_SFLOAT), or VK_NULL_HANDLE each where one has more elements than the context's
     // texelBufferLimit().
@@ -84,7 +85,7 @@ public:
 private:
     VkDevice device_;
     int numPoints_ = 0, numSourceVertices_ = 0, numPatches_ = 0, numPatchOutputs_ = 0, rate_ = 1;
-    VkBuffer handles_[7] = {};
+    VkBuffer handles_[6] = {};
     VkBufferView texelHandles_[3] = {};
     struct Arrays;  // the buffers behind handles_
     std::unique_ptr<Arrays> arrays_;

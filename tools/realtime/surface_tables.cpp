@@ -14,8 +14,14 @@ const char* toString(TableRoute route) {
     return "?";
 }
 
+const std::vector<TableRoute>& allTableRoutes() {
+    static const std::vector<TableRoute> all{TableRoute::FactorizedLimit, TableRoute::LevelsThenLimit,
+                                             TableRoute::Patches};
+    return all;
+}
+
 std::optional<TableRoute> tableRouteNamed(const std::string& word) {
-    for (TableRoute route : {TableRoute::FactorizedLimit, TableRoute::LevelsThenLimit, TableRoute::Patches})
+    for (TableRoute route : allTableRoutes())
         if (word == tablesWord(route)) return route;
     return std::nullopt;
 }

@@ -31,10 +31,11 @@ enum class TableRoute {
     Patches,
 };
 const char* toString(TableRoute route);
-// The route `quadtri demo --tables` and `quadtri view --tables` name `word` ("factorized",
-// "levels", "patches"), or none.
-std::optional<TableRoute> tableRouteNamed(const std::string& word);
+// Every route, and the words `quadtri demo --tables` and `quadtri view --tables` name them by
+// ("factorized", "levels", "patches").
+const std::vector<TableRoute>& allTableRoutes();
 const char* tablesWord(TableRoute route);
+std::optional<TableRoute> tableRouteNamed(const std::string& word);  // none for another word
 
 // The host tables of `route` for level `level` (>= 0; at level 0 both routes are the cage's own
 // limit table) of `refiner` (refined at least that far), copied, so they outlive the Refiner. Throws what the Refiner throws (MemoryBudgetError

@@ -19,13 +19,6 @@ const std::vector<cli::EvaluatorKind>& allEvaluators() {
     return all;
 }
 
-const std::vector<realtime::TableRoute>& allTableRoutes() {
-    static const std::vector<realtime::TableRoute> all{realtime::TableRoute::FactorizedLimit,
-                                                       realtime::TableRoute::LevelsThenLimit,
-                                                       realtime::TableRoute::Patches};
-    return all;
-}
-
 const char* toString(cli::EvaluatorKind kind) {
     return kind == cli::EvaluatorKind::Cpu ? "cpu" : kind == cli::EvaluatorKind::Tbb ? "tbb" : "vulkan";
 }

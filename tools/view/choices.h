@@ -32,7 +32,7 @@ struct Choices {
 const std::vector<BoundaryInterpolation>& allBoundaries();
 const std::vector<CreaseMethod>& allCreaseMethods();
 const std::vector<cli::EvaluatorKind>& allEvaluators();
-const std::vector<realtime::TableRoute>& allTableRoutes();
+using realtime::allTableRoutes;
 const char* toString(cli::EvaluatorKind kind);
 const char* toString(render::Shading shading);  // as `quadtri render --shading` spells it
 
