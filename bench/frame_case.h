@@ -48,7 +48,8 @@ public:
     // not): TbbEvaluator's frames bitwise CpuEvaluator's, the chain's limit within 1e-5 of the
     // bounding box diagonal of the factorized one (normals within 1e-3 doubled per level past
     // the first: float rounding), Vulkan's within 1e-5 of the diagonal and 1e-3, the mesh normals
-    // of unit length.
+    // of unit length. Where a point's tangents differ in length by a ratio r, its normals may
+    // differ by 64 float epsilons times r (the skin pinches the surface there).
     void prepare(float radians);
 
     // CpuEvaluator's limit positions and unit normals of level N at prepare()'s angle, through
@@ -68,6 +69,8 @@ private:
         std::string route;
         std::unique_ptr<realtime::FrameEvaluator> evaluator;
     };
+
+    std::vector<double> tangentRatios() const;
 
     std::string name_;
     int level_;
