@@ -52,6 +52,13 @@ struct LevelPatchTable {
     // The box spline's per cell j (rate + 1) + i, per patch point: the weights of the position and
     // of d/ds, d/dt, interleaved (36 floats a cell; zero outside the triangle).
     std::vector<float> boxSplineWeights;
+    // The same weights as runs over the grid lines i, for hosts that evaluate 8 cells of a row at
+    // once: lineWidth() floats a run, zero past the rate. curveWeightLines[k lineWidth() + i] is
+    // curveWeights[8 i + k]; boxSplineWeightLines[(36 j + 3 p + d) lineWidth() + i] is
+    // boxSplineWeights[36 (j (rate + 1) + i) + 3 p + d].
+    std::vector<float> curveWeightLines;
+    std::vector<float> boxSplineWeightLines;
+    int lineWidth() const { return (rate() + 15) / 8 * 8; }  // rate + 1 lines and 7 more, in 8s
 
     // The rest: stencil i gives point numPatchOutputs() + i, level-L vertex stencilVertices[i],
     // from level K's vertices.
@@ -75,7 +82,8 @@ struct LevelPatchTable {
         auto bytesOf = [](const auto& v) { return v.size() * sizeof(v[0]); };
         std::size_t total = bytesOf(patchBasis) + bytesOf(pointOffsets) + bytesOf(patchPoints) +
                             bytesOf(outputOffsets) + bytesOf(outputVertices) + bytesOf(outputCells) +
-                            bytesOf(stencilVertices) + bytesOf(curveWeights) + bytesOf(boxSplineWeights) + stencils.bytes();
+                            bytesOf(stencilVertices) + bytesOf(curveWeights) + bytesOf(boxSplineWeights) + bytesOf(curveWeightLines) +
+                            bytesOf(boxSplineWeightLines) + stencils.bytes();
         return total;
     }
 };

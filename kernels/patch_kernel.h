@@ -24,6 +24,9 @@ struct LevelPatchArrays {
     const std::uint16_t* outputCells;
     const float* curveWeights;
     const float* boxSplineWeights;
+    int lineWidth;  // the same weights as runs over the grid lines, for the 8-wide loops
+    const float* curveWeightLines;
+    const float* boxSplineWeightLines;
 };
 
 // Patches [start, end) from 3-float sources, output o written at element o (positions, normals:

@@ -6,6 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
 #include "kernels/limit_kernel.h"
 #include "kernels/patch_kernel.h"
 
@@ -202,16 +206,181 @@ void boxSplinePatch(const float* src, int srcStride, const LevelPatchArrays& a, 
         storeBatch(b, count, o, position, positionStride, normal, normalStride);
     }
 }
+#endif
 
+#if defined(__AVX2__) && defined(__FMA__) && !defined(QUADTRI_PORTABLE_PATCH_LOOPS)
+#define QUADTRI_PATCH_LOOPS_8
+// The AVX2 build evaluates 8 cells of a row at once, lane k at grid line i0 + k, the weights
+// read as runs over the grid lines (LevelPatchTable's *Lines arrays): arithmetic rather than
+// shuffles, which is where the one-point-a-register loops above spend their time.
 
+// The unit normals of tangents u, v lane by lane, (0, 0, 0) where they are parallel.
+inline void unitNormals8(const __m256 u[3], const __m256 v[3], __m256 n[3]) {
+    n[0] = _mm256_fmsub_ps(u[1], v[2], _mm256_mul_ps(u[2], v[1]));
+    n[1] = _mm256_fmsub_ps(u[2], v[0], _mm256_mul_ps(u[0], v[2]));
+    n[2] = _mm256_fmsub_ps(u[0], v[1], _mm256_mul_ps(u[1], v[0]));
+    auto dot = [](const __m256 a[3]) {
+        return _mm256_fmadd_ps(a[2], a[2], _mm256_fmadd_ps(a[1], a[1], _mm256_mul_ps(a[0], a[0])));
+    };
+    const __m256 n2 = dot(n), floor = _mm256_mul_ps(_mm256_set1_ps(kDegenerateSine * kDegenerateSine),
+                                                    _mm256_mul_ps(dot(u), dot(v)));
+    // 1 / sqrt(n2): the estimate and one Newton step (within 2e-7 of it, where a division and a
+    // square root would keep the loop waiting).
+    const __m256 y = _mm256_rsqrt_ps(n2);
+    const __m256 refined = _mm256_mul_ps(_mm256_mul_ps(_mm256_set1_ps(0.5f), y),
+                                         _mm256_fnmadd_ps(_mm256_mul_ps(n2, y), y, _mm256_set1_ps(3.0f)));
+    const __m256 scale = _mm256_and_ps(_mm256_cmp_ps(n2, floor, _CMP_GT_OQ), refined);
+    for (int c = 0; c < 3; ++c) n[c] = _mm256_mul_ps(n[c], scale);
+}
 
+// Lanes [0, count) of x, y, z as count 3-float items from d on, `stride` floats apart.
+inline void store8(float* d, int stride, const __m256 v[3], int count) {
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 xy0 = _mm256_unpacklo_ps(v[0], v[1]), xy1 = _mm256_unpackhi_ps(v[0], v[1]);
+    const __m256 z0 = _mm256_unpacklo_ps(v[2], zero), z1 = _mm256_unpackhi_ps(v[2], zero);
+    const __m256 a0 = _mm256_shuffle_ps(xy0, z0, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 a1 = _mm256_shuffle_ps(xy0, z0, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 a2 = _mm256_shuffle_ps(xy1, z1, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 a3 = _mm256_shuffle_ps(xy1, z1, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m128 item[8] = {_mm256_castps256_ps128(a0),   _mm256_castps256_ps128(a1),   _mm256_castps256_ps128(a2),
+                            _mm256_castps256_ps128(a3),   _mm256_extractf128_ps(a0, 1), _mm256_extractf128_ps(a1, 1),
+                            _mm256_extractf128_ps(a2, 1), _mm256_extractf128_ps(a3, 1)};
+    // Packed items: each 4-float store's last float is the next item's first, written next.
+    if (stride == 3)
+        for (int k = 0; k + 1 < count; ++k) _mm_storeu_ps(d + 3 * k, item[k]);
+    else
+        for (int k = 0; k + 1 < count; ++k) store3(d + static_cast<long>(k) * stride, item[k]);
+    store3(d + static_cast<long>(count - 1) * stride, item[count - 1]);
+}
+
+// Calls each(o, j, i, count) for every 8 or fewer outputs [o, o + count) of the patch at grid
+// lines i .. i + count - 1 of row j. A row's outputs are a run of grid lines as the table builds
+// them (a patch misses at most a row's ends, which its neighbours write); a row that is not is
+// taken an output at a time, one outside the grid not at all.
+template <class Each>
+void forEachRowChunk(const LevelPatchArrays& a, int patch, Each&& each) {
+    const int n = a.rate, last = a.outputOffsets[patch + 1];
+    const std::uint16_t* cells = a.outputCells;
+    for (int o = a.outputOffsets[patch]; o < last;) {
+        const int j = cells[o] >> 8, i = cells[o] & 0xff;
+        int end = std::min(last, o + std::max(1, n + 1 - i));  // a full run's end, at most
+        while ((cells[end - 1] >> 8) != j) --end;
+        const int lastLine = cells[end - 1] & 0xff;
+        if (j <= n && lastLine <= n) {
+            if (lastLine - i == end - 1 - o) {
+                for (int k = o; k < end; k += 8) each(k, j, i + (k - o), std::min(8, end - k));
+            } else {
+                for (int k = o; k < end; ++k) each(k, j, cells[k] & 0xff, 1);
+            }
+        }
+        o = end;
+    }
+}
+
+// A B-spline patch as a tensor product, 8 grid lines a register: the rows' curves
+// Q_r(i) = sum_c B_c(i) P_rc and their derivatives first, then each row of outputs from them.
+void bSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a, int patch, float* position,
+                   int positionStride, float* normal, int normalStride) {
+    const int n = a.rate, width = a.lineWidth;
+    const int* ids = a.patchPoints + a.pointOffsets[patch];
+    const __m128 first = load3(src + static_cast<long>(ids[0]) * srcStride);
+    alignas(16) float p0[4], points[16][4];
+    _mm_store_ps(p0, first);
+    for (int k = 0; k < 16; ++k) _mm_store_ps(points[k], _mm_sub_ps(load3(src + static_cast<long>(ids[k]) * srcStride), first));
+    alignas(32) float q[4][3][kMaxRate + 8], dq[4][3][kMaxRate + 8];
+    for (int i = 0; i < n + 8; i += 8) {  // every line a row's 8 lanes may read
+        __m256 w[8];
+        for (int k = 0; k < 8; ++k) w[k] = _mm256_loadu_ps(a.curveWeightLines + k * width + i);
+#pragma GCC unroll 4
+        for (int r = 0; r < 4; ++r)
+#pragma GCC unroll 3
+            for (int c = 0; c < 3; ++c) {
+                const float* p = &points[4 * r][c];
+                __m256 sum = _mm256_mul_ps(w[0], _mm256_set1_ps(p[0])), dsum = _mm256_mul_ps(w[4], _mm256_set1_ps(p[0]));
+                for (int k = 1; k < 4; ++k) {
+                    sum = _mm256_fmadd_ps(w[k], _mm256_set1_ps(p[4 * k]), sum);
+                    dsum = _mm256_fmadd_ps(w[4 + k], _mm256_set1_ps(p[4 * k]), dsum);
+                }
+                _mm256_store_ps(&q[r][c][i], sum);
+                _mm256_store_ps(&dq[r][c][i], dsum);
+            }
+    }
+    forEachRowChunk(a, patch, [&](int o, int j, int i, int count) __attribute__((always_inline)) {
+        const float* w = a.curveWeights + 8 * j;
+        __m256 p[3], u[3], v[3];
+        // Nine independent sums, so that the multiply-adds overlap.
+#pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) p[c] = _mm256_set1_ps(p0[c]), u[c] = v[c] = _mm256_setzero_ps();
+#pragma GCC unroll 4
+        for (int r = 0; r < 4; ++r) {
+            const __m256 wr = _mm256_set1_ps(w[r]), dwr = _mm256_set1_ps(w[4 + r]);
+#pragma GCC unroll 3
+            for (int c = 0; c < 3; ++c) {
+                const __m256 qr = _mm256_loadu_ps(&q[r][c][i]);
+                p[c] = _mm256_fmadd_ps(wr, qr, p[c]);
+                u[c] = _mm256_fmadd_ps(wr, _mm256_loadu_ps(&dq[r][c][i]), u[c]);
+                v[c] = _mm256_fmadd_ps(dwr, qr, v[c]);
+            }
+        }
+        if (position) store8(position + static_cast<long>(o) * positionStride, positionStride, p, count);
+        if (normal) {
+            __m256 nn[3];
+            unitNormals8(u, v, nn);
+            store8(normal + static_cast<long>(o) * normalStride, normalStride, nn, count);
+        }
+    });
+}
+
+// A box-spline patch, 8 cells of a row a register: each from its 12 points' weights, read as
+// runs over the row's grid lines.
+void boxSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a, int patch, float* position,
+                     int positionStride, float* normal, int normalStride) {
+    const int* ids = a.patchPoints + a.pointOffsets[patch];
+    alignas(16) float points[12][4], offsets[12][4];
+    const __m128 first = load3(src + static_cast<long>(ids[0]) * srcStride);
+    for (int k = 0; k < 12; ++k) {
+        const __m128 x = load3(src + static_cast<long>(ids[k]) * srcStride);
+        _mm_store_ps(points[k], x);
+        _mm_store_ps(offsets[k], _mm_sub_ps(x, first));
+    }
+    const long width = a.lineWidth;
+    forEachRowChunk(a, patch, [&](int o, int j, int i, int count) __attribute__((always_inline)) {
+        const float* w = a.boxSplineWeightLines + 36 * j * width + i;
+        __m256 p[3], u[3], v[3];
+#pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) p[c] = u[c] = v[c] = _mm256_setzero_ps();
+#pragma GCC unroll 4
+        for (int k = 0; k < 12; ++k, w += 3 * width) {
+            const __m256 wp = _mm256_loadu_ps(w), ws = _mm256_loadu_ps(w + width), wt = _mm256_loadu_ps(w + 2 * width);
+#pragma GCC unroll 3
+            for (int c = 0; c < 3; ++c) {
+                p[c] = _mm256_fmadd_ps(wp, _mm256_set1_ps(points[k][c]), p[c]);
+                const __m256 d = _mm256_set1_ps(offsets[k][c]);
+                u[c] = _mm256_fmadd_ps(ws, d, u[c]);
+                v[c] = _mm256_fmadd_ps(wt, d, v[c]);
+            }
+        }
+        if (position) store8(position + static_cast<long>(o) * positionStride, positionStride, p, count);
+        if (normal) {
+            __m256 nn[3];
+            unitNormals8(u, v, nn);
+            store8(normal + static_cast<long>(o) * normalStride, normalStride, nn, count);
+        }
+    });
+}
 #endif
 
 // Patches [start, end).
 inline void levelPatchLoop(const float* src, int srcStride, const LevelPatchArrays& a, float* position,
                            int positionStride, float* normal, int normalStride, int start, int end) {
     for (int patch = start; patch < end; ++patch) {
-        if (a.patchBasis[patch] == 0)
+        const bool bSpline = a.patchBasis[patch] == 0;
+#ifdef QUADTRI_PATCH_LOOPS_8
+        if (bSpline) bSplinePatch8(src, srcStride, a, patch, position, positionStride, normal, normalStride);
+        else boxSplinePatch8(src, srcStride, a, patch, position, positionStride, normal, normalStride);
+        continue;
+#endif
+        if (bSpline)
             bSplinePatch(src, srcStride, a, patch, position, positionStride, normal, normalStride);
         else
             boxSplinePatch(src, srcStride, a, patch, position, positionStride, normal, normalStride);

@@ -152,7 +152,9 @@ HostLevelPatchCall levelPatchCall(const float* src, const BufferDescriptor& srcD
               t.stencils.offsets.size() == t.stencils.sizes.size() &&
               t.stencils.weightOffsets.size() == t.stencils.sizes.size() && t.rate() <= LevelPatchTable::kMaxRate &&
               t.curveWeights.size() == 8 * std::size_t(t.rate() + 1) &&
-              t.boxSplineWeights.size() == 36 * std::size_t((t.rate() + 1) * (t.rate() + 1)),
+              t.boxSplineWeights.size() == 36 * std::size_t((t.rate() + 1) * (t.rate() + 1)) &&
+              t.curveWeightLines.size() == 8 * std::size_t(t.lineWidth()) &&
+              t.boxSplineWeightLines.size() == 36 * std::size_t((t.rate() + 1) * t.lineWidth()),
           "inconsistent LevelPatchTable arrays");
     HostLevelPatchCall c{};
     c.src = src + srcDesc.offset;
@@ -164,7 +166,10 @@ HostLevelPatchCall levelPatchCall(const float* src, const BufferDescriptor& srcD
                  t.outputOffsets.data(),
                  t.outputCells.data(),
                  t.curveWeights.data(),
-                 t.boxSplineWeights.data()};
+                 t.boxSplineWeights.data(),
+                 t.lineWidth(),
+                 t.curveWeightLines.data(),
+                 t.boxSplineWeightLines.data()};
     c.position = dstPosition ? dstPosition + positionDesc.offset : nullptr;
     c.positionStride = positionDesc.stride;
     c.normal = dstNormal ? dstNormal + normalDesc.offset : nullptr;

@@ -20,7 +20,8 @@ namespace {
 
 using Basis = LevelPatchTable::Basis;
 
-// The cubic B-spline's weights at every grid line and the box spline's at every cell.
+// The cubic B-spline's weights at every grid line and the box spline's at every cell, also as
+// runs over the grid lines.
 void fillWeights(LevelPatchTable& t) {
     const int n = t.rate();
     for (int i = 0; i <= n; ++i) {
@@ -41,6 +42,16 @@ void fillWeights(LevelPatchTable& t) {
                 cell[3 * k + 2] = float(wt[k]);
             }
         }
+    const std::size_t width = std::size_t(t.lineWidth());
+    t.curveWeightLines.assign(8 * width, 0.0f);
+    for (int i = 0; i <= n; ++i)
+        for (int k = 0; k < 8; ++k) t.curveWeightLines[std::size_t(k) * width + std::size_t(i)] = t.curveWeights[std::size_t(8 * i + k)];
+    t.boxSplineWeightLines.assign(std::size_t(36 * (n + 1)) * width, 0.0f);
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            for (int k = 0; k < 36; ++k)
+                t.boxSplineWeightLines[std::size_t(36 * j + k) * width + std::size_t(i)] =
+                    t.boxSplineWeights[std::size_t((j * (n + 1) + i) * 36 + k)];
 }
 
 }  // namespace

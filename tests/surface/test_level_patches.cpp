@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include <quadtri/far/level_patch_table.h>
 #define QUADTRI_PORTABLE_PATCH_LOOPS  // the loops CPUs without SSE2 run, checked here too
@@ -93,7 +95,10 @@ TEST_P(LevelPatches, EqualTheFactorizedLimitAndWriteEveryVertexOnce) {
                                            table.outputOffsets.data(),
                                            table.outputCells.data(),
                                            table.curveWeights.data(),
-                                           table.boxSplineWeights.data()};
+                                           table.boxSplineWeights.data(),
+                                           table.lineWidth(),
+                                           table.curveWeightLines.data(),
+                                           table.boxSplineWeightLines.data()};
     std::vector<float> portablePosition(position.size()), portableNormal(normal.size());
     kernels::levelPatchLoop(r.positions[std::size_t(c.patchLevel)].data(), 3, arrays, portablePosition.data(), 3,
                             portableNormal.data(), 3, 0, table.numPatches());
@@ -127,6 +132,51 @@ TEST(LevelPatches, AreAllPatchesOnRegularMeshes) {
     EXPECT_EQ(quads.stencils.numStencils(), 0);
     EXPECT_EQ(quads.numPatches(), torus.refiner->faces(1).numFaces());
     for (LevelPatchTable::Basis b : quads.patchBasis) EXPECT_EQ(b, LevelPatchTable::Basis::BSpline);
+}
+
+// The host loops write a row of a patch 8 cells at a time: at rates past 8 (rows of several
+// chunks), into interleaved outputs (each item's 4-float store must not reach the next), and with
+// a patch's outputs in an order whose rows are not runs of grid lines (taken one at a time), each
+// point is the one the plain layout gives, bit for bit.
+TEST(LevelPatches, HostLoopsTakeAnyRateOutputLayoutAndOrder) {
+    for (const auto& [mesh, scheme, L] : {std::tuple{"osd/catmark_torus.obj", Scheme::CatmullClark, 4},
+                                          std::tuple{"mixed/mixed_torus.obj", Scheme::SchaeferWarren, 4}}) {
+        SCOPED_TRACE(mesh);
+        Options options;
+        options.scheme = scheme;
+        const RefinedMesh r = refineMesh(mesh, L, options);
+        const LevelPatchTable table = r.refiner->levelPatches(L, 0);
+        ASSERT_EQ(table.rate(), 16);
+        const std::size_t n = std::size_t(table.numPoints);
+        const BufferDescriptor xyz(0, 3, 3);
+        std::vector<float> position(3 * n), normal(3 * n);
+        CpuEvaluator::EvalLevelPatches(r.positions[0].data(), xyz, position.data(), xyz, normal.data(), xyz, table);
+
+        std::vector<float> interleaved(6 * n + 1, -7.0f);
+        CpuEvaluator::EvalLevelPatches(r.positions[0].data(), xyz, interleaved.data(), BufferDescriptor(0, 3, 6),
+                                       interleaved.data(), BufferDescriptor(3, 3, 6), table);
+        for (std::size_t k = 0; k < n; ++k)
+            for (std::size_t c = 0; c < 3; ++c) {
+                ASSERT_EQ(interleaved[6 * k + c], position[3 * k + c]) << "point " << k;
+                ASSERT_EQ(interleaved[6 * k + 3 + c], normal[3 * k + c]) << "point " << k;
+            }
+        EXPECT_EQ(interleaved.back(), -7.0f);
+
+        // Patch 0's first two outputs swapped: its first row is no run of grid lines now.
+        LevelPatchTable shuffled = table;
+        const int first = shuffled.outputOffsets[0], other = first + 1;
+        ASSERT_EQ(shuffled.outputCells[std::size_t(first)] >> 8, shuffled.outputCells[std::size_t(other)] >> 8);
+        std::swap(shuffled.outputCells[std::size_t(first)], shuffled.outputCells[std::size_t(other)]);
+        std::swap(shuffled.outputVertices[std::size_t(first)], shuffled.outputVertices[std::size_t(other)]);
+        std::vector<float> p2(3 * n), n2(3 * n);
+        CpuEvaluator::EvalLevelPatches(r.positions[0].data(), xyz, p2.data(), xyz, n2.data(), xyz, shuffled);
+        const std::vector<int> before = table.pointOfVertex(), after = shuffled.pointOfVertex();
+        for (std::size_t v = 0; v < n; ++v)
+            for (std::size_t c = 0; c < 3; ++c) {
+                ASSERT_EQ(p2[3 * std::size_t(after[v]) + c], position[3 * std::size_t(before[v]) + c]) << "vertex " << v;
+                ASSERT_EQ(n2[3 * std::size_t(after[v]) + c], normal[3 * std::size_t(before[v]) + c]) << "vertex " << v;
+            }
+    }
 }
 
 TEST(LevelPatches, RefusesLevelsOutOfRangeAndLevelsWithoutTables) {
