@@ -253,6 +253,18 @@ inline void store8(float* d, int stride, const __m256 v[3], int count) {
     store3(d + static_cast<long>(count - 1) * stride, item[count - 1]);
 }
 
+// Outputs [o, o + count): positions p and the unit normals of tangents u, v (either output may
+// be null).
+inline void storeOutputs8(const __m256 p[3], const __m256 u[3], const __m256 v[3], int o, int count, float* position,
+                          int positionStride, float* normal, int normalStride) {
+    if (position) store8(position + static_cast<long>(o) * positionStride, positionStride, p, count);
+    if (normal) {
+        __m256 n[3];
+        unitNormals8(u, v, n);
+        store8(normal + static_cast<long>(o) * normalStride, normalStride, n, count);
+    }
+}
+
 // Calls each(o, j, i, count) for every 8 or fewer outputs [o, o + count) of the patch at grid
 // lines i .. i + count - 1 of row j. A row's outputs are a run of grid lines as the table builds
 // them (a patch misses at most a row's ends, which its neighbours write); a row that is not is
@@ -322,12 +334,7 @@ void bSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a, i
                 v[c] = _mm256_fmadd_ps(dwr, qr, v[c]);
             }
         }
-        if (position) store8(position + static_cast<long>(o) * positionStride, positionStride, p, count);
-        if (normal) {
-            __m256 nn[3];
-            unitNormals8(u, v, nn);
-            store8(normal + static_cast<long>(o) * normalStride, normalStride, nn, count);
-        }
+        storeOutputs8(p, u, v, o, count, position, positionStride, normal, normalStride);
     });
 }
 
@@ -360,12 +367,7 @@ void boxSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a,
                 v[c] = _mm256_fmadd_ps(wt, d, v[c]);
             }
         }
-        if (position) store8(position + static_cast<long>(o) * positionStride, positionStride, p, count);
-        if (normal) {
-            __m256 nn[3];
-            unitNormals8(u, v, nn);
-            store8(normal + static_cast<long>(o) * normalStride, normalStride, nn, count);
-        }
+        storeOutputs8(p, u, v, o, count, position, positionStride, normal, normalStride);
     });
 }
 #endif
