@@ -80,7 +80,7 @@ FaceTree::Leaf leafOf(PatchKind kind) {
 
 }  // namespace
 
-FaceTree::FaceTree(Leaf kind, const FaceParameterization& param) : param_(param) {
+FaceTree::FaceTree(Leaf kind, const FaceParameterization& param) : param_(param), regular_(true) {
     static constexpr int kPoints[] = {0, 16, 12, 4, 3};
     numColumns_ = kPoints[int(kind)];
     Node root;

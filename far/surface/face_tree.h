@@ -34,6 +34,9 @@ public:
     ~FaceTree();
 
     const FaceParameterization& parameterization() const { return param_; }
+    // A regular face's tree (one leaf over its points in the basis's order, at the face's own
+    // (u, v)): its basis; else Leaf::None.
+    Leaf regularBasis() const { return regular_ ? nodes_[0].leaf : Leaf::None; }
     int numColumns() const { return numColumns_; }
 
     // Where (u, v) (checked by the caller to lie in the face's domain) falls: its leaf's rows
@@ -99,6 +102,7 @@ private:
     int rings_ = 0;
     bool linear_ = false;
     FaceParameterization param_;
+    bool regular_ = false;
     int numColumns_ = 0;
     std::vector<Node> nodes_;
     std::vector<int> children_;

@@ -16,6 +16,7 @@
 #include "far/limit/limit_table.h"
 #include "far/schemes/scheme.h"
 #include "far/surface/face_tree.h"
+#include "far/surface/patch_basis.h"
 #include "far/topology/topology_builder.h"
 
 namespace quadtri {
@@ -287,6 +288,8 @@ LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, cons
     return toFloatTable(table);
 }
 
+namespace {
+
 // N components of a located point: its leaf's rows over the control values (column j reads
 // control[sources[j] * stride]), the derivatives taken to the face's (u, v).
 template <int N>
@@ -312,6 +315,54 @@ void combine(const FaceTree& tree, const FaceTree::Located& at, const int* sourc
         if (out[2]) out[2][c] = float(s[c] * at.k[0][1] + t[c] * at.k[1][1]);
     }
 }
+
+// N components of a regular quad's point straight from its 16 points (point k at
+// control[sources[k] * stride]): the basis is a tensor product, so each row's curve first, then
+// the rows, in double. The same sums as the tree's weights in another order: within rounding of
+// the stencil applied.
+template <int N>
+void bSplinePoint(const double bs[4], const double ds[4], const double bt[4], const double dt[4],
+                  const float* const points[16], int c0, float* position, float* dPdu, float* dPdv) {
+    double p[N] = {}, su[N] = {}, sv[N] = {};
+    for (int r = 0; r < 4; ++r) {
+        double q[N] = {}, dq[N] = {};
+        for (int k = 0; k < 4; ++k)
+            for (int c = 0; c < N; ++c) {
+                const double x = points[4 * r + k][c0 + c];
+                q[c] += bs[k] * x;
+                dq[c] += ds[k] * x;
+            }
+        for (int c = 0; c < N; ++c) {
+            p[c] += bt[r] * q[c];
+            su[c] += bt[r] * dq[c];
+            sv[c] += dt[r] * q[c];
+        }
+    }
+    for (int c = 0; c < N; ++c) {
+        position[c0 + c] = float(p[c]);
+        if (dPdu) dPdu[c0 + c] = float(su[c]);
+        if (dPdv) dPdv[c0 + c] = float(sv[c]);
+    }
+}
+
+void bSplinePoint(double u, double v, const int* sources, const float* control, int width, int stride,
+                  float* position, float* dPdu, float* dPdv) {
+    double bs[4], ds[4], bt[4], dt[4];
+    internal::cubicBSplineWeights(u, bs, ds);
+    internal::cubicBSplineWeights(v, bt, dt);
+    const float* points[16];
+    for (int k = 0; k < 16; ++k) points[k] = control + std::size_t(sources[k]) * std::size_t(stride);
+    for (int c = 0; c < width; c += 4) {
+        switch (std::min(4, width - c)) {
+        case 1: bSplinePoint<1>(bs, ds, bt, dt, points, c, position, dPdu, dPdv); break;
+        case 2: bSplinePoint<2>(bs, ds, bt, dt, points, c, position, dPdu, dPdv); break;
+        case 3: bSplinePoint<3>(bs, ds, bt, dt, points, c, position, dPdu, dPdv); break;
+        default: bSplinePoint<4>(bs, ds, bt, dt, points, c, position, dPdu, dPdv); break;
+        }
+    }
+}
+
+}  // namespace
 
 // The factory's trees and the scratch they cut with, kept alive by every FaceSurface it made.
 struct FaceSurfaceFactory::Shared {
@@ -384,9 +435,13 @@ void FaceSurface::evaluate(double u, double v, const float* control, int width, 
     if (!p.contains(u, v))
         throw SurfaceError("face " + std::to_string(face()) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
                            ") is outside its domain (" + p.describe() + ")");
+    const int* sources = valueOf_ ? sources_.data() : columns_->data();
+    if (tree_->regularBasis() == FaceTree::Leaf::BSpline) {
+        bSplinePoint(u, v, sources, control, width, stride, position, dPdu, dPdv);
+        return;
+    }
     FaceTree::Located at;
     tree_->locate(u, v, at);
-    const int* sources = valueOf_ ? sources_.data() : columns_->data();
     for (int c = 0; c < width; c += 4) {
         float* const out[3] = {position + c, dPdu ? dPdu + c : nullptr, dPdv ? dPdv + c : nullptr};
         switch (std::min(4, width - c)) {

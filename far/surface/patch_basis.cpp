@@ -7,10 +7,7 @@ namespace quadtri {
 inline namespace v0 {
 namespace internal {
 
-namespace {
-
-// Uniform cubic B-spline: the four weights and their derivatives at x in [0, 1].
-void cubic(double x, double w[4], double d[4]) {
+void cubicBSplineWeights(double x, double w[4], double d[4]) {
     const double y = 1.0 - x, x2 = x * x, x3 = x2 * x;
     w[0] = y * y * y / 6.0;
     w[1] = (3.0 * x3 - 6.0 * x2 + 4.0) / 6.0;
@@ -21,6 +18,8 @@ void cubic(double x, double w[4], double d[4]) {
     d[2] = -1.5 * x2 + x + 0.5;
     d[3] = 0.5 * x2;
 }
+
+namespace {
 
 // Stam's basis times 12, one row per point, over the monomials 1, s, t, s², st, t², s³, s²t,
 // st², t³, s⁴, s³t, s²t², st³, t⁴.
@@ -69,8 +68,8 @@ void tensorProduct(int n, const double* ls, const double* ds, const double* lt, 
 
 void bSplineWeights(double s, double t, double wP[16], double wDs[16], double wDt[16]) {
     double bs[4], ds[4], bt[4], dt[4];
-    cubic(s, bs, ds);
-    cubic(t, bt, dt);
+    cubicBSplineWeights(s, bs, ds);
+    cubicBSplineWeights(t, bt, dt);
     tensorProduct(4, bs, ds, bt, dt, wP, wDs, wDt);
 }
 

@@ -6,6 +6,9 @@ namespace quadtri {
 inline namespace v0 {
 namespace internal {
 
+// Uniform cubic B-spline: the four weights and their derivatives at x in [0, 1].
+void cubicBSplineWeights(double x, double w[4], double d[4]);
+
 // Bicubic uniform B-spline over a 4 × 4 grid, point (i, j) at [4 j + i] (i along s); the patch
 // spans the middle square, (s, t) = (0, 0) at point (1, 1).
 void bSplineWeights(double s, double t, double wP[16], double wDs[16], double wDt[16]);
