@@ -18,7 +18,13 @@ inline namespace v0 {
 namespace kernels {
 namespace {
 
-#if defined(__SSE2__) && !defined(QUADTRI_PORTABLE_PATCH_LOOPS)
+#if defined(__AVX2__) && defined(__FMA__) && !defined(QUADTRI_PORTABLE_PATCH_LOOPS)
+#define QUADTRI_PATCH_LOOPS_8
+#endif
+
+#if defined(QUADTRI_PATCH_LOOPS_8)
+// The AVX2 + FMA build: the 8-wide loops below.
+#elif defined(__SSE2__) && !defined(QUADTRI_PORTABLE_PATCH_LOOPS)
 // The unit normal of tangents u, v at d, (0, 0, 0) where they are parallel: lane by lane the
 // scalar unitNormals' arithmetic.
 inline void storeNormal(float* d, __m128 u, __m128 v) {
@@ -208,11 +214,10 @@ void boxSplinePatch(const float* src, int srcStride, const LevelPatchArrays& a, 
 }
 #endif
 
-#if defined(__AVX2__) && defined(__FMA__) && !defined(QUADTRI_PORTABLE_PATCH_LOOPS)
-#define QUADTRI_PATCH_LOOPS_8
+#ifdef QUADTRI_PATCH_LOOPS_8
 // The AVX2 build evaluates 8 cells of a row at once, lane k at grid line i0 + k, the weights
 // read as runs over the grid lines (LevelPatchTable's *Lines arrays): arithmetic rather than
-// shuffles, which is where the one-point-a-register loops above spend their time.
+// the shuffles the one-point-a-register SSE loops spend their time on.
 
 // The unit normals of tangents u, v lane by lane, (0, 0, 0) where they are parallel.
 inline void unitNormals8(const __m256 u[3], const __m256 v[3], __m256 n[3]) {
@@ -380,12 +385,10 @@ inline void levelPatchLoop(const float* src, int srcStride, const LevelPatchArra
 #ifdef QUADTRI_PATCH_LOOPS_8
         if (bSpline) bSplinePatch8(src, srcStride, a, patch, position, positionStride, normal, normalStride);
         else boxSplinePatch8(src, srcStride, a, patch, position, positionStride, normal, normalStride);
-        continue;
+#else
+        if (bSpline) bSplinePatch(src, srcStride, a, patch, position, positionStride, normal, normalStride);
+        else boxSplinePatch(src, srcStride, a, patch, position, positionStride, normal, normalStride);
 #endif
-        if (bSpline)
-            bSplinePatch(src, srcStride, a, patch, position, positionStride, normal, normalStride);
-        else
-            boxSplinePatch(src, srcStride, a, patch, position, positionStride, normal, normalStride);
     }
 }
 

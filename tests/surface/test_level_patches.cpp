@@ -1,7 +1,7 @@
 // LevelPatchTable (far/level_patch_table.h, Refiner::levelPatches): level L's limit from level K's
 // regular patches equals the factorized limit route within float rounding on every scheme, every
 // level-L vertex is one point of the table, the serial and threaded evaluators agree bit for bit,
-// the portable loops (CPUs without SSE2) agree with them, and the errors.
+// the portable loops (CPUs without SSE2) and the baseline build's agree with them, and the errors.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,6 +19,11 @@
 #include "tests/test_support.h"
 
 namespace quadtri::test {
+
+// tests/surface/baseline_patch_loops.cpp
+void baselinePatchLoop(const float* src, const kernels::LevelPatchArrays& a, float* position, float* normal,
+                       int numPatches);
+
 namespace {
 
 struct Case {
@@ -99,16 +104,24 @@ TEST_P(LevelPatches, EqualTheFactorizedLimitAndWriteEveryVertexOnce) {
                                            table.lineWidth(),
                                            table.curveWeightLines.data(),
                                            table.boxSplineWeightLines.data()};
-    std::vector<float> portablePosition(position.size()), portableNormal(normal.size());
-    kernels::levelPatchLoop(r.positions[std::size_t(c.patchLevel)].data(), 3, arrays, portablePosition.data(), 3,
-                            portableNormal.data(), 3, 0, table.numPatches());
-    float worstPortable = 0, worstPortableNormal = 0;
-    for (std::size_t k = 0; k < 3 * std::size_t(table.numPatchOutputs()); ++k) {
-        worstPortable = std::max(worstPortable, std::fabs(portablePosition[k] - position[k]));
-        worstPortableNormal = std::max(worstPortableNormal, std::fabs(portableNormal[k] - normal[k]));
+    // And the baseline build's loops, which a CPU with AVX2 does not run.
+    for (bool portable : {true, false}) {
+        SCOPED_TRACE(portable ? "portable loops" : "baseline loops");
+        std::vector<float> otherPosition(position.size()), otherNormal(normal.size());
+        const float* source = r.positions[std::size_t(c.patchLevel)].data();
+        if (portable)
+            kernels::levelPatchLoop(source, 3, arrays, otherPosition.data(), 3, otherNormal.data(), 3, 0,
+                                    table.numPatches());
+        else
+            baselinePatchLoop(source, arrays, otherPosition.data(), otherNormal.data(), table.numPatches());
+        float worstOther = 0, worstOtherNormal = 0;
+        for (std::size_t k = 0; k < 3 * std::size_t(table.numPatchOutputs()); ++k) {
+            worstOther = std::max(worstOther, std::fabs(otherPosition[k] - position[k]));
+            worstOtherNormal = std::max(worstOtherNormal, std::fabs(otherNormal[k] - normal[k]));
+        }
+        EXPECT_LT(worstOther, 1e-6 * diagonal);
+        EXPECT_LT(worstOtherNormal, 1e-5f);
     }
-    EXPECT_LT(worstPortable, 1e-6 * diagonal);
-    EXPECT_LT(worstPortableNormal, 1e-5f);
 
     std::vector<float> tbbPosition(position.size()), tbbNormal(normal.size());
     TbbEvaluator::EvalLevelPatches(r.positions[std::size_t(c.patchLevel)].data(), xyz, tbbPosition.data(), xyz,
