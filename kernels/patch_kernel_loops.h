@@ -238,8 +238,19 @@ inline void unitNormals8(const __m256 u[3], const __m256 v[3], __m256 n[3]) {
     for (int c = 0; c < 3; ++c) n[c] = _mm256_mul_ps(n[c], scale);
 }
 
-// Lanes [0, count) of x, y, z as count 3-float items from d on, `stride` floats apart.
-inline void store8(float* d, int stride, const __m256 v[3], int count) {
+// Eight packed 3-float items x y z from d on: each lane moved to its place in the 24 floats by
+// one permute per coordinate, then the three 8-float stores blended from them.
+inline void storePacked8(float* d, const __m256 v[3]) {
+    const __m256 x = _mm256_permutevar8x32_ps(v[0], _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+    const __m256 y = _mm256_permutevar8x32_ps(v[1], _mm256_setr_epi32(5, 0, 3, 6, 1, 4, 7, 2));
+    const __m256 z = _mm256_permutevar8x32_ps(v[2], _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+    _mm256_storeu_ps(d, _mm256_blend_ps(_mm256_blend_ps(x, y, 0x92), z, 0x24));
+    _mm256_storeu_ps(d + 8, _mm256_blend_ps(_mm256_blend_ps(x, y, 0x24), z, 0x49));
+    _mm256_storeu_ps(d + 16, _mm256_blend_ps(_mm256_blend_ps(x, y, 0x49), z, 0x92));
+}
+
+// The lanes of x, y, z as 8 items x y z _.
+inline void items8(const __m256 v[3], __m128 item[8]) {
     const __m256 zero = _mm256_setzero_ps();
     const __m256 xy0 = _mm256_unpacklo_ps(v[0], v[1]), xy1 = _mm256_unpackhi_ps(v[0], v[1]);
     const __m256 z0 = _mm256_unpacklo_ps(v[2], zero), z1 = _mm256_unpackhi_ps(v[2], zero);
@@ -247,15 +258,30 @@ inline void store8(float* d, int stride, const __m256 v[3], int count) {
     const __m256 a1 = _mm256_shuffle_ps(xy0, z0, _MM_SHUFFLE(3, 2, 3, 2));
     const __m256 a2 = _mm256_shuffle_ps(xy1, z1, _MM_SHUFFLE(1, 0, 1, 0));
     const __m256 a3 = _mm256_shuffle_ps(xy1, z1, _MM_SHUFFLE(3, 2, 3, 2));
-    const __m128 item[8] = {_mm256_castps256_ps128(a0),   _mm256_castps256_ps128(a1),   _mm256_castps256_ps128(a2),
-                            _mm256_castps256_ps128(a3),   _mm256_extractf128_ps(a0, 1), _mm256_extractf128_ps(a1, 1),
-                            _mm256_extractf128_ps(a2, 1), _mm256_extractf128_ps(a3, 1)};
+    item[0] = _mm256_castps256_ps128(a0), item[1] = _mm256_castps256_ps128(a1);
+    item[2] = _mm256_castps256_ps128(a2), item[3] = _mm256_castps256_ps128(a3);
+    item[4] = _mm256_extractf128_ps(a0, 1), item[5] = _mm256_extractf128_ps(a1, 1);
+    item[6] = _mm256_extractf128_ps(a2, 1), item[7] = _mm256_extractf128_ps(a3, 1);
+}
+
+// Lanes [0, count) of x, y, z as count 3-float items from d on, `stride` floats apart.
+inline void store8(float* d, int stride, const __m256 v[3], int count) {
+    if (stride == 3 && count == 8) return storePacked8(d, v);
+    __m128 item[8];
+    items8(v, item);
     // Packed items: each 4-float store's last float is the next item's first, written next.
     if (stride == 3)
         for (int k = 0; k + 1 < count; ++k) _mm_storeu_ps(d + 3 * k, item[k]);
     else
         for (int k = 0; k + 1 < count; ++k) store3(d + static_cast<long>(k) * stride, item[k]);
     store3(d + static_cast<long>(count - 1) * stride, item[count - 1]);
+}
+
+// Lanes [0, count) as the items outputs[0 .. count) of d, `stride` floats apart.
+inline void storeScattered8(float* d, int stride, const __m256 v[3], const int* outputs, int count) {
+    __m128 item[8];
+    items8(v, item);
+    for (int k = 0; k < count; ++k) store3(d + static_cast<long>(outputs[k]) * stride, item[k]);
 }
 
 // Outputs [o, o + count): positions p and the unit normals of tangents u, v (either output may
@@ -270,14 +296,34 @@ inline void storeOutputs8(const __m256 p[3], const __m256 u[3], const __m256 v[3
     }
 }
 
+// The same for the outputs outputs[0 .. count).
+inline void storeOutputs8(const __m256 p[3], const __m256 u[3], const __m256 v[3], const int* outputs, int count,
+                          float* position, int positionStride, float* normal, int normalStride) {
+    if (position) storeScattered8(position, positionStride, p, outputs, count);
+    if (normal) {
+        __m256 n[3];
+        unitNormals8(u, v, n);
+        storeScattered8(normal, normalStride, n, outputs, count);
+    }
+}
+
 // Calls each(o, j, i, count) for every 8 or fewer outputs [o, o + count) of the patch at grid
-// lines i .. i + count - 1 of row j. A row's outputs are a run of grid lines as the table builds
-// them (a patch misses at most a row's ends, which its neighbours write); a row that is not is
-// taken an output at a time, one outside the grid not at all.
-template <class Each>
-void forEachRowChunk(const LevelPatchArrays& a, int patch, Each&& each) {
+// lines i .. i + count - 1 of row j, and eachColumn(outputs, i, j, count) for the outputs
+// outputs[0 .. count) at grid line i of rows j .. j + count - 1. A row's outputs are a run of
+// grid lines as the table builds them (a patch misses at most a row's ends, which its
+// neighbours write), taken 8 at a time; a last single output that continues a column of them
+// (rows of rate + 1 outputs end so, row after row) goes into that column, which would
+// otherwise cost a register of 8 each. A row that is not a run is taken an output at a time,
+// one outside the grid not at all.
+template <class Each, class EachColumn>
+void forEachRowChunk(const LevelPatchArrays& a, int patch, Each&& each, EachColumn&& eachColumn) {
     const int n = a.rate, last = a.outputOffsets[patch + 1];
     const std::uint16_t* cells = a.outputCells;
+    int column[8], columnLine = -1, columnRow = 0, columnCount = 0;
+    auto flush = [&] {
+        if (columnCount > 0) eachColumn(column, columnLine, columnRow, columnCount);
+        columnCount = 0;
+    };
     for (int o = a.outputOffsets[patch]; o < last;) {
         const int j = cells[o] >> 8, i = cells[o] & 0xff;
         int end = std::min(last, o + std::max(1, n + 1 - i));  // a full run's end, at most
@@ -285,13 +331,23 @@ void forEachRowChunk(const LevelPatchArrays& a, int patch, Each&& each) {
         const int lastLine = cells[end - 1] & 0xff;
         if (j <= n && lastLine <= n) {
             if (lastLine - i == end - 1 - o) {
-                for (int k = o; k < end; k += 8) each(k, j, i + (k - o), std::min(8, end - k));
+                int k = o;
+                for (; end - k >= 8; k += 8) each(k, j, i + (k - o), 8);
+                if (end - k == 1) {
+                    if (columnCount > 0 && (columnLine != lastLine || columnRow + columnCount != j)) flush();
+                    if (columnCount == 0) columnLine = lastLine, columnRow = j;
+                    column[columnCount++] = k;
+                    if (columnCount == 8) flush();
+                } else if (k < end) {
+                    each(k, j, i + (k - o), end - k);
+                }
             } else {
                 for (int k = o; k < end; ++k) each(k, j, cells[k] & 0xff, 1);
             }
         }
         o = end;
     }
+    flush();
 }
 
 // A B-spline patch as a tensor product, 8 grid lines a register: the rows' curves
@@ -324,22 +380,52 @@ void bSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a, i
     }
     forEachRowChunk(a, patch, [&](int o, int j, int i, int count) __attribute__((always_inline)) {
         const float* w = a.curveWeights + 8 * j;
+        __m256 wr[4], dwr[4], p[3];
+#pragma GCC unroll 4
+        for (int r = 0; r < 4; ++r) wr[r] = _mm256_set1_ps(w[r]), dwr[r] = _mm256_set1_ps(w[4 + r]);
+        // The positions first and out, then the tangents: 8 weights and 6 sums fit the registers.
+#pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) {
+            p[c] = _mm256_set1_ps(p0[c]);
+#pragma GCC unroll 4
+            for (int r = 0; r < 4; ++r) p[c] = _mm256_fmadd_ps(wr[r], _mm256_loadu_ps(&q[r][c][i]), p[c]);
+        }
+        if (position) store8(position + static_cast<long>(o) * positionStride, positionStride, p, count);
+        if (!normal) return;
+        // The curves again from memory (L1) rather than kept from the positions' sums: 12 more
+        // loads where the compiler would otherwise spill and reload 24 registers.
+        asm volatile("" ::: "memory");
+        __m256 u[3], v[3];
+#pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) {
+            u[c] = v[c] = _mm256_setzero_ps();
+#pragma GCC unroll 4
+            for (int r = 0; r < 4; ++r) {
+                u[c] = _mm256_fmadd_ps(wr[r], _mm256_loadu_ps(&dq[r][c][i]), u[c]);
+                v[c] = _mm256_fmadd_ps(dwr[r], _mm256_loadu_ps(&q[r][c][i]), v[c]);
+            }
+        }
+        __m256 n[3];
+        unitNormals8(u, v, n);
+        store8(normal + static_cast<long>(o) * normalStride, normalStride, n, count);
+    }, [&](const int* outputs, int i, int j, int count) __attribute__((always_inline)) {
+        // Lane k at row j + k: the rows' weights per lane, the curves' values at line i for all.
+        const float* w = a.curveWeightLines + j;
         __m256 p[3], u[3], v[3];
-        // Nine independent sums, so that the multiply-adds overlap.
 #pragma GCC unroll 3
         for (int c = 0; c < 3; ++c) p[c] = _mm256_set1_ps(p0[c]), u[c] = v[c] = _mm256_setzero_ps();
 #pragma GCC unroll 4
         for (int r = 0; r < 4; ++r) {
-            const __m256 wr = _mm256_set1_ps(w[r]), dwr = _mm256_set1_ps(w[4 + r]);
+            const __m256 wr = _mm256_loadu_ps(w + r * width), dwr = _mm256_loadu_ps(w + (4 + r) * width);
 #pragma GCC unroll 3
             for (int c = 0; c < 3; ++c) {
-                const __m256 qr = _mm256_loadu_ps(&q[r][c][i]);
+                const __m256 qr = _mm256_set1_ps(q[r][c][i]);
                 p[c] = _mm256_fmadd_ps(wr, qr, p[c]);
-                u[c] = _mm256_fmadd_ps(wr, _mm256_loadu_ps(&dq[r][c][i]), u[c]);
+                u[c] = _mm256_fmadd_ps(wr, _mm256_set1_ps(dq[r][c][i]), u[c]);
                 v[c] = _mm256_fmadd_ps(dwr, qr, v[c]);
             }
         }
-        storeOutputs8(p, u, v, o, count, position, positionStride, normal, normalStride);
+        storeOutputs8(p, u, v, outputs, count, position, positionStride, normal, normalStride);
     });
 }
 
@@ -356,7 +442,7 @@ void boxSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a,
         _mm_store_ps(offsets[k], _mm_sub_ps(x, first));
     }
     const long width = a.lineWidth;
-    forEachRowChunk(a, patch, [&](int o, int j, int i, int count) __attribute__((always_inline)) {
+    auto row = [&](int o, int j, int i, int count) __attribute__((always_inline)) {
         const float* w = a.boxSplineWeightLines + 36 * j * width + i;
         __m256 p[3], u[3], v[3];
 #pragma GCC unroll 3
@@ -373,6 +459,10 @@ void boxSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a,
             }
         }
         storeOutputs8(p, u, v, o, count, position, positionStride, normal, normalStride);
+    };
+    // The box spline's weights are runs over a row's lines only: a column's cells one by one.
+    forEachRowChunk(a, patch, row, [&](const int* outputs, int i, int j, int count) {
+        for (int k = 0; k < count; ++k) row(outputs[k], j + k, i, 1);
     });
 }
 #endif
