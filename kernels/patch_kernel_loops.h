@@ -434,13 +434,12 @@ void bSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a, i
 void boxSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a, int patch, float* position,
                      int positionStride, float* normal, int normalStride) {
     const int* ids = a.patchPoints + a.pointOffsets[patch];
-    alignas(16) float points[12][4], offsets[12][4];
+    // The position too is summed relative to the first point (as the Vulkan kernel sums it), so
+    // that one broadcast of each offset serves the position and both tangents.
+    alignas(16) float p0[4], offsets[12][4];
     const __m128 first = load3(src + static_cast<long>(ids[0]) * srcStride);
-    for (int k = 0; k < 12; ++k) {
-        const __m128 x = load3(src + static_cast<long>(ids[k]) * srcStride);
-        _mm_store_ps(points[k], x);
-        _mm_store_ps(offsets[k], _mm_sub_ps(x, first));
-    }
+    _mm_store_ps(p0, first);
+    for (int k = 0; k < 12; ++k) _mm_store_ps(offsets[k], _mm_sub_ps(load3(src + static_cast<long>(ids[k]) * srcStride), first));
     const long width = a.lineWidth;
     auto row = [&](int o, int j, int i, int count) __attribute__((always_inline)) {
         const float* w = a.boxSplineWeightLines + 36 * j * width + i;
@@ -452,12 +451,14 @@ void boxSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a,
             const __m256 wp = _mm256_loadu_ps(w), ws = _mm256_loadu_ps(w + width), wt = _mm256_loadu_ps(w + 2 * width);
 #pragma GCC unroll 3
             for (int c = 0; c < 3; ++c) {
-                p[c] = _mm256_fmadd_ps(wp, _mm256_set1_ps(points[k][c]), p[c]);
                 const __m256 d = _mm256_set1_ps(offsets[k][c]);
+                p[c] = _mm256_fmadd_ps(wp, d, p[c]);
                 u[c] = _mm256_fmadd_ps(ws, d, u[c]);
                 v[c] = _mm256_fmadd_ps(wt, d, v[c]);
             }
         }
+#pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) p[c] = _mm256_add_ps(p[c], _mm256_set1_ps(p0[c]));
         storeOutputs8(p, u, v, o, count, position, positionStride, normal, normalStride);
     };
     // The box spline's weights are runs over a row's lines only: a column's cells one by one.

@@ -362,6 +362,42 @@ void bSplinePoint(double u, double v, const int* sources, const float* control, 
     }
 }
 
+// N components of a regular triangle's point straight from its 12 points (as bSplinePoint):
+// the box spline's weights at (u, v), then each sum in double.
+template <int N>
+void boxSplinePoint(const double wP[12], const double wDs[12], const double wDt[12], const float* const points[12],
+                    int c0, float* position, float* dPdu, float* dPdv) {
+    double p[N] = {}, su[N] = {}, sv[N] = {};
+    for (int k = 0; k < 12; ++k)
+        for (int c = 0; c < N; ++c) {
+            const double x = points[k][c0 + c];
+            p[c] += wP[k] * x;
+            su[c] += wDs[k] * x;
+            sv[c] += wDt[k] * x;
+        }
+    for (int c = 0; c < N; ++c) {
+        position[c0 + c] = float(p[c]);
+        if (dPdu) dPdu[c0 + c] = float(su[c]);
+        if (dPdv) dPdv[c0 + c] = float(sv[c]);
+    }
+}
+
+void boxSplinePoint(double u, double v, const int* sources, const float* control, int width, int stride,
+                    float* position, float* dPdu, float* dPdv) {
+    double wP[12], wDs[12], wDt[12];
+    internal::boxSplineWeights(u, v, wP, wDs, wDt);
+    const float* points[12];
+    for (int k = 0; k < 12; ++k) points[k] = control + std::size_t(sources[k]) * std::size_t(stride);
+    for (int c = 0; c < width; c += 4) {
+        switch (std::min(4, width - c)) {
+        case 1: boxSplinePoint<1>(wP, wDs, wDt, points, c, position, dPdu, dPdv); break;
+        case 2: boxSplinePoint<2>(wP, wDs, wDt, points, c, position, dPdu, dPdv); break;
+        case 3: boxSplinePoint<3>(wP, wDs, wDt, points, c, position, dPdu, dPdv); break;
+        default: boxSplinePoint<4>(wP, wDs, wDt, points, c, position, dPdu, dPdv); break;
+        }
+    }
+}
+
 }  // namespace
 
 // The factory's trees and the scratch they cut with, kept alive by every FaceSurface it made.
@@ -436,9 +472,10 @@ void FaceSurface::evaluate(double u, double v, const float* control, int width, 
         throw SurfaceError("face " + std::to_string(face()) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
                            ") is outside its domain (" + p.describe() + ")");
     const int* sources = valueOf_ ? sources_.data() : columns_->data();
-    if (tree_->regularBasis() == FaceTree::Leaf::BSpline) {
-        bSplinePoint(u, v, sources, control, width, stride, position, dPdu, dPdv);
-        return;
+    switch (tree_->regularBasis()) {
+    case FaceTree::Leaf::BSpline: return bSplinePoint(u, v, sources, control, width, stride, position, dPdu, dPdv);
+    case FaceTree::Leaf::BoxSpline: return boxSplinePoint(u, v, sources, control, width, stride, position, dPdu, dPdv);
+    default: break;
     }
     FaceTree::Located at;
     tree_->locate(u, v, at);
