@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include <quadtri/far/refiner.h>
 #include "far/fvar/fvar_channel.h"
@@ -290,6 +291,20 @@ LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, cons
 
 namespace {
 
+// Calls each(std::integral_constant<int, N>, c) for the components [c, c + N) of a width-wide
+// value, N = 4 but for a last shorter group: the sums are unrolled for each N.
+template <class Each>
+void byComponentGroups(int width, Each&& each) {
+    for (int c = 0; c < width; c += 4) {
+        switch (std::min(4, width - c)) {
+        case 1: each(std::integral_constant<int, 1>{}, c); break;
+        case 2: each(std::integral_constant<int, 2>{}, c); break;
+        case 3: each(std::integral_constant<int, 3>{}, c); break;
+        default: each(std::integral_constant<int, 4>{}, c); break;
+        }
+    }
+}
+
 // N components of a located point: its leaf's rows over the control values (column j reads
 // control[sources[j] * stride]), the derivatives taken to the face's (u, v).
 template <int N>
@@ -316,6 +331,17 @@ void combine(const FaceTree& tree, const FaceTree::Located& at, const int* sourc
     }
 }
 
+// Components [c0, c0 + N) of a point and its derivatives from their sums in double.
+template <int N>
+void storeSums(const double p[N], const double su[N], const double sv[N], int c0, float* position, float* dPdu,
+               float* dPdv) {
+    for (int c = 0; c < N; ++c) {
+        position[c0 + c] = float(p[c]);
+        if (dPdu) dPdu[c0 + c] = float(su[c]);
+        if (dPdv) dPdv[c0 + c] = float(sv[c]);
+    }
+}
+
 // N components of a regular quad's point straight from its 16 points (point k at
 // control[sources[k] * stride]): the basis is a tensor product, so each row's curve first, then
 // the rows, in double. The same sums as the tree's weights in another order: within rounding of
@@ -338,11 +364,7 @@ void bSplinePoint(const double bs[4], const double ds[4], const double bt[4], co
             sv[c] += dt[r] * q[c];
         }
     }
-    for (int c = 0; c < N; ++c) {
-        position[c0 + c] = float(p[c]);
-        if (dPdu) dPdu[c0 + c] = float(su[c]);
-        if (dPdv) dPdv[c0 + c] = float(sv[c]);
-    }
+    storeSums<N>(p, su, sv, c0, position, dPdu, dPdv);
 }
 
 void bSplinePoint(double u, double v, const int* sources, const float* control, int width, int stride,
@@ -352,14 +374,9 @@ void bSplinePoint(double u, double v, const int* sources, const float* control, 
     internal::cubicBSplineWeights(v, bt, dt);
     const float* points[16];
     for (int k = 0; k < 16; ++k) points[k] = control + std::size_t(sources[k]) * std::size_t(stride);
-    for (int c = 0; c < width; c += 4) {
-        switch (std::min(4, width - c)) {
-        case 1: bSplinePoint<1>(bs, ds, bt, dt, points, c, position, dPdu, dPdv); break;
-        case 2: bSplinePoint<2>(bs, ds, bt, dt, points, c, position, dPdu, dPdv); break;
-        case 3: bSplinePoint<3>(bs, ds, bt, dt, points, c, position, dPdu, dPdv); break;
-        default: bSplinePoint<4>(bs, ds, bt, dt, points, c, position, dPdu, dPdv); break;
-        }
-    }
+    byComponentGroups(width, [&](auto n, int c) {
+        bSplinePoint<decltype(n)::value>(bs, ds, bt, dt, points, c, position, dPdu, dPdv);
+    });
 }
 
 // N components of a regular triangle's point straight from its 12 points (as bSplinePoint):
@@ -375,11 +392,7 @@ void boxSplinePoint(const double wP[12], const double wDs[12], const double wDt[
             su[c] += wDs[k] * x;
             sv[c] += wDt[k] * x;
         }
-    for (int c = 0; c < N; ++c) {
-        position[c0 + c] = float(p[c]);
-        if (dPdu) dPdu[c0 + c] = float(su[c]);
-        if (dPdv) dPdv[c0 + c] = float(sv[c]);
-    }
+    storeSums<N>(p, su, sv, c0, position, dPdu, dPdv);
 }
 
 void boxSplinePoint(double u, double v, const int* sources, const float* control, int width, int stride,
@@ -388,14 +401,9 @@ void boxSplinePoint(double u, double v, const int* sources, const float* control
     internal::boxSplineWeights(u, v, wP, wDs, wDt);
     const float* points[12];
     for (int k = 0; k < 12; ++k) points[k] = control + std::size_t(sources[k]) * std::size_t(stride);
-    for (int c = 0; c < width; c += 4) {
-        switch (std::min(4, width - c)) {
-        case 1: boxSplinePoint<1>(wP, wDs, wDt, points, c, position, dPdu, dPdv); break;
-        case 2: boxSplinePoint<2>(wP, wDs, wDt, points, c, position, dPdu, dPdv); break;
-        case 3: boxSplinePoint<3>(wP, wDs, wDt, points, c, position, dPdu, dPdv); break;
-        default: boxSplinePoint<4>(wP, wDs, wDt, points, c, position, dPdu, dPdv); break;
-        }
-    }
+    byComponentGroups(width, [&](auto n, int c) {
+        boxSplinePoint<decltype(n)::value>(wP, wDs, wDt, points, c, position, dPdu, dPdv);
+    });
 }
 
 }  // namespace
@@ -479,15 +487,10 @@ void FaceSurface::evaluate(double u, double v, const float* control, int width, 
     }
     FaceTree::Located at;
     tree_->locate(u, v, at);
-    for (int c = 0; c < width; c += 4) {
+    byComponentGroups(width, [&](auto n, int c) {
         float* const out[3] = {position + c, dPdu ? dPdu + c : nullptr, dPdv ? dPdv + c : nullptr};
-        switch (std::min(4, width - c)) {
-        case 1: combine<1>(*tree_, at, sources, control + c, stride, out); break;
-        case 2: combine<2>(*tree_, at, sources, control + c, stride, out); break;
-        case 3: combine<3>(*tree_, at, sources, control + c, stride, out); break;
-        default: combine<4>(*tree_, at, sources, control + c, stride, out); break;
-        }
-    }
+        combine<decltype(n)::value>(*tree_, at, sources, control + c, stride, out);
+    });
 }
 
 }  // namespace v0
