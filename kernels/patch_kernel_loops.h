@@ -439,7 +439,8 @@ void boxSplinePatch8(const float* src, int srcStride, const LevelPatchArrays& a,
     alignas(16) float p0[4], offsets[12][4];
     const __m128 first = load3(src + static_cast<long>(ids[0]) * srcStride);
     _mm_store_ps(p0, first);
-    for (int k = 0; k < 12; ++k) _mm_store_ps(offsets[k], _mm_sub_ps(load3(src + static_cast<long>(ids[k]) * srcStride), first));
+    for (int k = 0; k < 12; ++k)
+        _mm_store_ps(offsets[k], _mm_sub_ps(load3(src + static_cast<long>(ids[k]) * srcStride), first));
     const long width = a.lineWidth;
     auto row = [&](int o, int j, int i, int count) __attribute__((always_inline)) {
         const float* w = a.boxSplineWeightLines + 36 * j * width + i;
