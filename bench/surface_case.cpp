@@ -46,11 +46,12 @@ void SurfaceCase::prepare() {
         for (int k = 0; k < pointsPerFace_; ++k) {
             const auto [u, v] = randomPoint(p, random);
             points_.faces.push_back(f);
-            points_.uv.insert(points_.uv.end(), {u, v});
+            points_.u.push_back(u);
+            points_.v.push_back(v);
         }
     }
     position_.assign(3 * std::size_t(points_.size()), 0.0f);
-    normal_ = position_;
+    normal_ = du_ = dv_ = position_;
     warm_ = std::make_unique<FaceSurfaceFactory>(*surface_);
     evaluate(*warm_);
 }
@@ -58,11 +59,13 @@ void SurfaceCase::prepare() {
 void SurfaceCase::evaluate(FaceSurfaceFactory& factory) {
     const float* control = cage_.mesh.positions.data();
     FaceSurface surface;
-    for (int i = 0; i < points_.size(); ++i) {
-        if (i == 0 || points_.faces[i] != points_.faces[i - 1]) factory.faceSurface(points_.faces[i], surface);
-        float du[3], dv[3];
-        surface.evaluate(points_.uv[2 * i], points_.uv[2 * i + 1], control, 3, 3, &position_[3 * i], du, dv);
-        unitNormal(du, dv, &normal_[3 * i]);
+    for (int first = 0, end = 0; first < points_.size(); first = end) {
+        while (end < points_.size() && points_.faces[std::size_t(end)] == points_.faces[std::size_t(first)]) ++end;
+        factory.faceSurface(points_.faces[std::size_t(first)], surface);
+        const std::size_t at = 3 * std::size_t(first);
+        surface.evaluate(end - first, &points_.u[std::size_t(first)], &points_.v[std::size_t(first)], control, 3, 3,
+                         &position_[at], &du_[at], &dv_[at]);
+        for (std::size_t i = at; i < 3 * std::size_t(end); i += 3) unitNormal(&du_[i], &dv_[i], &normal_[i]);
     }
 }
 

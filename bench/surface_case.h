@@ -1,6 +1,6 @@
 // One surface case on quadtri's side: the limit position, du, dv and unit normal at random (u, v)
-// on every face of a cage, by FaceSurfaceFactory and FaceSurface::evaluate, serial, grouped by
-// face; the factory's cost (LimitSurface from the mesh's arrays + FaceSurfaceFactory) beside it. OpenSubdiv's ways are
+// on every face of a cage, by FaceSurfaceFactory and FaceSurface::evaluate, serial, a face's points
+// as one batch; the factory's cost (LimitSurface from the mesh's arrays + FaceSurfaceFactory) beside it. OpenSubdiv's ways are
 // bench/opensubdiv/osd_surface_case.h.
 #pragma once
 
@@ -35,7 +35,7 @@ struct SurfaceCage {
 // parameterization), grouped by face.
 struct SurfacePoints {
     std::vector<int> faces;
-    std::vector<double> uv;
+    std::vector<double> u, v;
     int size() const { return int(faces.size()); }
 };
 
@@ -64,6 +64,7 @@ private:
     std::unique_ptr<FaceSurfaceFactory> warm_;  // has seen every point
     SurfacePoints points_;
     std::vector<float> position_, normal_;
+    std::vector<float> du_, dv_;  // per point, for its normal
 };
 
 }  // namespace quadtri::bench

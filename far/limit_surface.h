@@ -170,13 +170,21 @@ public:
     // each, `stride` floats apart, as LimitSurface::evaluate.
     void evaluate(double u, double v, const float* control, int width, int stride, float* position,
                   float* dPdu = nullptr, float* dPdv = nullptr);
+    // `count` points (u[i], v[i]) at once, as many calls of the above would give them: point i's
+    // position at position[i * outStride] (dPdu, dPdv likewise, where not null; outStride 0 is
+    // `width`). A regular face reads its control points once for all of them. Throws SurfaceError,
+    // naming the point's index, before anything is written if a point is outside the domain.
+    void evaluate(int count, const double* u, const double* v, const float* control, int width, int stride,
+                  float* position, float* dPdu = nullptr, float* dPdv = nullptr, int outStride = 0);
 
 private:
+    void check(double u, double v, int point) const;  // SurfaceError outside the domain
+
     friend class FaceSurfaceFactory;
     std::shared_ptr<void> shared_;  // the factory's trees, alive while this surface is
     internal::FaceTree* tree_ = nullptr;
     int face_ = -1;
-    const std::vector<int>* columns_ = nullptr;  // per column of the tree: the base vertex (value-mesh vertex)
+    const int* columns_ = nullptr;  // per column of the tree: the base vertex (value-mesh vertex)
     std::vector<int> sources_;  // face-varying: per column, the channel value it reads
     const std::vector<int>* valueOf_ = nullptr;
     LimitPointStencil local_;

@@ -93,7 +93,7 @@ struct OsdSurfaceCase::State {
                 patchPoints.resize(3 * std::size_t(surface.GetNumPatchPoints()));
                 surface.PreparePatchPoints(controlPoints, layout, patchPoints.data(), layout);
             }
-            const Real uv[2] = {Real(points.uv[2 * i]), Real(points.uv[2 * i + 1])};
+            const Real uv[2] = {Real(points.u[std::size_t(i)]), Real(points.v[std::size_t(i)])};
             Real p[3], d[6];
             surface.Evaluate(uv, patchPoints.data(), layout, p, d, d + 3);
             float du[3], dv[3];
@@ -149,7 +149,7 @@ struct OsdSurfaceCase::State {
         for (int i = 0; i < points.size(); ++i) {
             const int f = points.faces[i];
             const Bfr::Parameterization param(sdcScheme(), cage.mesh.faceSizes[std::size_t(f)]);
-            double uv[2] = {points.uv[2 * i], points.uv[2 * i + 1]}, st[2] = {uv[0], uv[1]};
+            double uv[2] = {points.u[std::size_t(i)], points.v[std::size_t(i)]}, st[2] = {uv[0], uv[1]};
             int sub = 0;
             if (param.HasSubFaces()) sub = param.ConvertCoordToNormalizedSubFace(uv, st);
             const Far::PatchTable::PatchHandle* handle = patches.map->FindPatch(patches.ptexOfFace[f] + sub, st[0], st[1]);

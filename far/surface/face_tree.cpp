@@ -242,7 +242,7 @@ void FaceTree::locate(double u, double v, Located& out) {
     std::copy(&w.k[0][0], &w.k[0][0] + 4, &out.k[0][0]);
 }
 
-void FaceTree::stencil(double u, double v, const std::vector<int>& columns, LimitPointStencil& out) {
+void FaceTree::stencil(double u, double v, const int* columns, LimitPointStencil& out) {
     Located at;
     locate(u, v, at);
     out.indices.clear();
@@ -261,7 +261,9 @@ void FaceTree::stencil(double u, double v, const std::vector<int>& columns, Limi
 
 FaceTrees::FaceTrees(const Topology& base, const Options& options, const LimitSurfaceOptions& surfaceOptions,
                      Sharpen sharpen, WalkScratch& baseScratch)
-    : base_(base), options_(options), surfaceOptions_(surfaceOptions), sharpen_(sharpen), scratch_(baseScratch) {
+    : base_(base), options_(options), surfaceOptions_(surfaceOptions), sharpen_(sharpen),
+      quadDomain_(FaceParameterization::of(options.scheme, 4)),
+      triangleDomain_(FaceParameterization::of(options.scheme, 3)), scratch_(baseScratch) {
     const SchemeRules& rules = rulesOf(options.scheme);
     rings_ = surfaceOptions.rings > 0 ? surfaceOptions.rings : rules.surfaceRings();
     linear_ = sharpen == Sharpen::All && rules.surfacePatches().sharpIsLinear;
@@ -281,7 +283,9 @@ void append(std::string& key, const std::vector<T>& items) {
 }  // namespace
 
 FaceTree& FaceTrees::treeOf(int face, std::vector<int>& columns) {
-    const FaceParameterization param = FaceParameterization::of(options_.scheme, base_.faceSize(face));
+    const int size = base_.faceSize(face);
+    const FaceParameterization param =
+        size == 4 ? quadDomain_ : size == 3 ? triangleDomain_ : FaceParameterization::of(options_.scheme, size);
     if (param.type != FaceParameterization::Type::QuadSubFaces) {
         // A regular face (most of a mesh) is its own patch: no neighbourhood to cut.
         FaceTree::Leaf kind = FaceTree::Leaf::None;
@@ -293,7 +297,7 @@ FaceTree& FaceTrees::treeOf(int face, std::vector<int>& columns) {
                 for (std::size_t j = 0; j < i; ++j)
                     if (columns[i] == columns[j]) kind = FaceTree::Leaf::None;
         } else {
-            kind = leafOf(regularPatch(base_, face, options_, columns));
+            kind = leafOf(patches_ ? patches_->of(face, columns) : regularPatch(base_, face, options_, columns));
         }
         if (kind != FaceTree::Leaf::None) {
             std::unique_ptr<FaceTree>& tree = regular_[int(kind) - 1];
@@ -316,10 +320,29 @@ FaceTree& FaceTrees::treeOf(int face, std::vector<int>& columns) {
     return *tree;
 }
 
+void FaceTrees::keepRings() {
+    if (!patches_) patches_ = std::make_unique<RegularPatches>(base_, options_);
+}
+
 const FaceTrees::Kept& FaceTrees::keptTreeOf(int face) {
-    if (kept_.empty()) kept_.resize(std::size_t(base_.numFaces()));
+    if (kept_.empty()) {
+        kept_.resize(std::size_t(base_.numFaces()));
+        keepRings();
+    }
     Kept& k = kept_[std::size_t(face)];
-    if (!k.tree) k.tree = &treeOf(face, k.columns);
+    if (k.tree) return k;
+    k.tree = &treeOf(face, columns_);
+    const int n = int(columns_.size());
+    if (keptUsed_ + n > keptCapacity_) {
+        keptCapacity_ = std::max(n, 16 * 1024);
+        keptBlocks_.emplace_back(new int[std::size_t(keptCapacity_)]);
+        keptUsed_ = 0;
+    }
+    int* kept = keptBlocks_.back().get() + keptUsed_;
+    std::copy(columns_.begin(), columns_.end(), kept);
+    keptUsed_ += n;
+    k.columns = kept;
+    k.numColumns = n;
     return k;
 }
 

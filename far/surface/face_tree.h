@@ -51,7 +51,7 @@ public:
 
     // The weights of (u, v) over columns[j] for the tree's column j, derivatives along the face's
     // u and v.
-    void stencil(double u, double v, const std::vector<int>& columns, LimitPointStencil& out);
+    void stencil(double u, double v, const int* columns, LimitPointStencil& out);
 
     // Row r's weights over the columns: columns rowColumn(k), weights rowWeight(k) for k in
     // [rowBegin(r), rowBegin(r + 1)).
@@ -133,9 +133,13 @@ public:
     // each time its points are asked for): the columns stay where they are while this lives.
     struct Kept {
         FaceTree* tree = nullptr;
-        std::vector<int> columns;
+        const int* columns = nullptr;
+        int numColumns = 0;
     };
     const Kept& keptTreeOf(int face);
+    // From now on each vertex's ring is ordered once for all the regular faces around it (for
+    // many faces: it takes memory in the mesh's size); keptTreeOf does it first.
+    void keepRings();
     int numShapes() const { return int(trees_.size()); }
 
 private:
@@ -143,13 +147,19 @@ private:
     Options options_;
     LimitSurfaceOptions surfaceOptions_;
     Sharpen sharpen_;
+    FaceParameterization quadDomain_, triangleDomain_;  // the scheme's, looked up once
     int rings_;
     bool linear_;
     std::unordered_map<std::string, std::unique_ptr<FaceTree>> trees_;
     std::unique_ptr<FaceTree> regular_[4];  // by Leaf - 1: BSpline, BoxSpline, Bilinear, Linear
+    std::unique_ptr<RegularPatches> patches_;  // after keepRings
     WalkScratch& scratch_;
     std::string key_;
     std::vector<Kept> kept_;  // per face, filled by keptTreeOf
+    // The kept columns, in blocks that never move (a block's worth of faces per allocation).
+    std::vector<std::unique_ptr<int[]>> keptBlocks_;
+    int keptUsed_ = 0, keptCapacity_ = 0;
+    std::vector<int> columns_;
 };
 
 }  // namespace internal

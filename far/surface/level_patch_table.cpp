@@ -82,10 +82,11 @@ LevelPatchTable buildLevelPatchTable(const Refiner& refiner, int L, int K) {
     std::vector<std::uint8_t> written(std::size_t(t.numPoints), 0);
     std::vector<int> points;
     std::vector<int> irregularFaces;
+    RegularPatches patches(patchLevel, options);
     std::vector<std::pair<int, int>> order;  // (cell, vertex)
     for (int f = 0; f < patchLevel.numFaces(); ++f) {
         if (patchLevel.faceHole[std::size_t(f)]) continue;
-        const PatchKind kind = regularPatch(patchLevel, f, options, points);
+        const PatchKind kind = patches.of(f, points);
         if (kind != PatchKind::BSpline && kind != PatchKind::BoxSpline) {
             irregularFaces.push_back(f);
             continue;

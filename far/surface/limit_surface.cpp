@@ -18,6 +18,7 @@
 #include "far/schemes/scheme.h"
 #include "far/surface/face_tree.h"
 #include "far/surface/patch_basis.h"
+#include "far/surface/patch_points.h"
 #include "far/topology/topology_builder.h"
 
 namespace quadtri {
@@ -62,7 +63,7 @@ void localStencil(const Topology& base, const Options& o, const LimitSurfaceOpti
     thread_local WalkScratch baseScratch;  // sized to the largest base mesh once per thread
     FaceTrees trees(base, o, surfaceOptions, sharpen, baseScratch);
     std::vector<int> columns;
-    trees.treeOf(face, columns).stencil(u, v, columns, out);
+    trees.treeOf(face, columns).stencil(u, v, columns.data(), out);
 }
 
 // The stencil applied to `control`.
@@ -249,7 +250,10 @@ LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, cons
         parallel::forEachRange(0, int(groups.size()) - 1, 1, [&](int begin, int end) {
             thread_local WalkScratch baseScratch;
             std::unique_ptr<FaceTrees>& trees = treesOfThread.local();
-            if (!trees) trees = std::make_unique<FaceTrees>(topology, o, surfaceOptions_, sharpen, baseScratch);
+            if (!trees) {
+                trees = std::make_unique<FaceTrees>(topology, o, surfaceOptions_, sharpen, baseScratch);
+                trees->keepRings();
+            }
             LimitPointStencil local;
             std::vector<int> columns;
             for (int g = begin; g < end; ++g) {
@@ -259,10 +263,10 @@ LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, cons
                     const int i = order[std::size_t(k)];
                     LimitPointStencil& s = block[std::size_t(i)];
                     if (!ch) {
-                        tree.stencil(u[first + i], v[first + i], columns, s);
+                        tree.stencil(u[first + i], v[first + i], columns.data(), s);
                         continue;
                     }
-                    tree.stencil(u[first + i], v[first + i], columns, local);
+                    tree.stencil(u[first + i], v[first + i], columns.data(), local);
                     mergeValues(ch->valueOf, local, s);
                 }
             }
@@ -290,20 +294,6 @@ LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, cons
 }
 
 namespace {
-
-// Calls each(std::integral_constant<int, N>, c) for the components [c, c + N) of a width-wide
-// value, N = 4 but for a last shorter group: the sums are unrolled for each N.
-template <class Each>
-void byComponentGroups(int width, Each&& each) {
-    for (int c = 0; c < width; c += 4) {
-        switch (std::min(4, width - c)) {
-        case 1: each(std::integral_constant<int, 1>{}, c); break;
-        case 2: each(std::integral_constant<int, 2>{}, c); break;
-        case 3: each(std::integral_constant<int, 3>{}, c); break;
-        default: each(std::integral_constant<int, 4>{}, c); break;
-        }
-    }
-}
 
 // N components of a located point: its leaf's rows over the control values (column j reads
 // control[sources[j] * stride]), the derivatives taken to the face's (u, v).
@@ -342,19 +332,19 @@ void storeSums(const double p[N], const double su[N], const double sv[N], int c0
     }
 }
 
-// N components of a regular quad's point straight from its 16 points (point k at
-// control[sources[k] * stride]): the basis is a tensor product, so each row's curve first, then
-// the rows, in double. The same sums as the tree's weights in another order: within rounding of
-// the stencil applied.
-template <int N>
+// N components of a regular quad's point straight from its 16 points (point k's components at
+// points[k][in0 ..], written to position[out0 ..]): the basis is a tensor product, so each row's
+// curve first, then the rows, in double. The same sums as the tree's weights in another order:
+// within rounding of the stencil applied.
+template <int N, class T>
 void bSplinePoint(const double bs[4], const double ds[4], const double bt[4], const double dt[4],
-                  const float* const points[16], int c0, float* position, float* dPdu, float* dPdv) {
+                  const T* const points[16], int in0, int out0, float* position, float* dPdu, float* dPdv) {
     double p[N] = {}, su[N] = {}, sv[N] = {};
     for (int r = 0; r < 4; ++r) {
         double q[N] = {}, dq[N] = {};
         for (int k = 0; k < 4; ++k)
             for (int c = 0; c < N; ++c) {
-                const double x = points[4 * r + k][c0 + c];
+                const double x = points[4 * r + k][in0 + c];
                 q[c] += bs[k] * x;
                 dq[c] += ds[k] * x;
             }
@@ -364,7 +354,7 @@ void bSplinePoint(const double bs[4], const double ds[4], const double bt[4], co
             sv[c] += dt[r] * q[c];
         }
     }
-    storeSums<N>(p, su, sv, c0, position, dPdu, dPdv);
+    storeSums<N>(p, su, sv, out0, position, dPdu, dPdv);
 }
 
 void bSplinePoint(double u, double v, const int* sources, const float* control, int width, int stride,
@@ -375,7 +365,7 @@ void bSplinePoint(double u, double v, const int* sources, const float* control, 
     const float* points[16];
     for (int k = 0; k < 16; ++k) points[k] = control + std::size_t(sources[k]) * std::size_t(stride);
     byComponentGroups(width, [&](auto n, int c) {
-        bSplinePoint<decltype(n)::value>(bs, ds, bt, dt, points, c, position, dPdu, dPdv);
+        bSplinePoint<decltype(n)::value>(bs, ds, bt, dt, points, c, c, position, dPdu, dPdv);
     });
 }
 
@@ -438,16 +428,19 @@ FaceSurface FaceSurfaceFactory::faceSurface(int face) {
 }
 
 void FaceSurfaceFactory::faceSurface(int face, FaceSurface& out) {
-    if (surface_->isHole(face)) throw SurfaceError("face " + std::to_string(face) + " is a hole: it has no surface");
+    const Topology& base = surface_->topology();
+    if (face < 0 || face >= base.numFaces()) surface_->parameterization(face);  // throws: out of range
+    if (base.faceHole[std::size_t(face)])
+        throw SurfaceError("face " + std::to_string(face) + " is a hole: it has no surface");
     if (out.shared_ != shared_) out.shared_ = shared_;
     out.face_ = face;
     const internal::FaceTrees::Kept& kept = shared_->trees.keptTreeOf(face);
     out.tree_ = kept.tree;
-    out.columns_ = &kept.columns;
+    out.columns_ = kept.columns;
     out.valueOf_ = valueOf_;
     if (valueOf_) {
-        out.sources_.resize(kept.columns.size());
-        for (std::size_t j = 0; j < kept.columns.size(); ++j) out.sources_[j] = (*valueOf_)[std::size_t(kept.columns[j])];
+        out.sources_.resize(std::size_t(kept.numColumns));
+        for (int j = 0; j < kept.numColumns; ++j) out.sources_[std::size_t(j)] = (*valueOf_)[std::size_t(kept.columns[j])];
     }
 }
 
@@ -464,22 +457,24 @@ const FaceParameterization& FaceSurface::parameterization() const {
 }
 
 void FaceSurface::stencil(double u, double v, LimitPointStencil& out) {
-    const FaceParameterization& p = parameterization();
-    if (!p.contains(u, v))
-        throw SurfaceError("face " + std::to_string(face()) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
-                           ") is outside its domain (" + p.describe() + ")");
-    if (!valueOf_) return tree_->stencil(u, v, *columns_, out);
-    tree_->stencil(u, v, *columns_, local_);
+    check(u, v, -1);
+    if (!valueOf_) return tree_->stencil(u, v, columns_, out);
+    tree_->stencil(u, v, columns_, local_);
     mergeValues(*valueOf_, local_, out);
+}
+
+void FaceSurface::check(double u, double v, int point) const {
+    const FaceParameterization& p = parameterization();
+    if (p.contains(u, v)) return;
+    throw SurfaceError("face " + std::to_string(face()) + (point >= 0 ? ", point " + std::to_string(point) : "") +
+                       ": (" + std::to_string(u) + ", " + std::to_string(v) + ") is outside its domain (" +
+                       p.describe() + ")");
 }
 
 void FaceSurface::evaluate(double u, double v, const float* control, int width, int stride, float* position,
                            float* dPdu, float* dPdv) {
-    const FaceParameterization& p = parameterization();
-    if (!p.contains(u, v))
-        throw SurfaceError("face " + std::to_string(face()) + ": (" + std::to_string(u) + ", " + std::to_string(v) +
-                           ") is outside its domain (" + p.describe() + ")");
-    const int* sources = valueOf_ ? sources_.data() : columns_->data();
+    check(u, v, -1);
+    const int* sources = valueOf_ ? sources_.data() : columns_;
     switch (tree_->regularBasis()) {
     case FaceTree::Leaf::BSpline: return bSplinePoint(u, v, sources, control, width, stride, position, dPdu, dPdv);
     case FaceTree::Leaf::BoxSpline: return boxSplinePoint(u, v, sources, control, width, stride, position, dPdu, dPdv);
@@ -491,6 +486,24 @@ void FaceSurface::evaluate(double u, double v, const float* control, int width, 
         float* const out[3] = {position + c, dPdu ? dPdu + c : nullptr, dPdv ? dPdv + c : nullptr};
         combine<decltype(n)::value>(*tree_, at, sources, control + c, stride, out);
     });
+}
+
+void FaceSurface::evaluate(int count, const double* u, const double* v, const float* control, int width, int stride,
+                           float* position, float* dPdu, float* dPdv, int outStride) {
+    if (count < 0) throw SurfaceError("FaceSurface::evaluate: " + std::to_string(count) + " points");
+    for (int i = 0; i < count; ++i) check(u[i], v[i], i);
+    const PatchPoints points{count, u, v, width, position, dPdu, dPdv, outStride > 0 ? outStride : width};
+    const int* sources = valueOf_ ? sources_.data() : columns_;
+    switch (tree_->regularBasis()) {
+    case FaceTree::Leaf::BSpline: return bSplinePoints(sources, control, stride, points);
+    case FaceTree::Leaf::BoxSpline: return boxSplinePoints(sources, control, stride, points);
+    default: break;
+    }
+    for (int i = 0; i < count; ++i) {
+        const std::size_t at = std::size_t(i) * std::size_t(points.outStride);
+        evaluate(u[i], v[i], control, width, stride, position + at, dPdu ? dPdu + at : nullptr,
+                 dPdv ? dPdv + at : nullptr);
+    }
 }
 
 }  // namespace v0

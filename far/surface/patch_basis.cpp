@@ -7,50 +7,19 @@ namespace quadtri {
 inline namespace v0 {
 namespace internal {
 
-void cubicBSplineWeights(double x, double w[4], double d[4]) {
-    const double y = 1.0 - x, x2 = x * x, x3 = x2 * x;
-    w[0] = y * y * y / 6.0;
-    w[1] = (3.0 * x3 - 6.0 * x2 + 4.0) / 6.0;
-    w[2] = (-3.0 * x3 + 3.0 * x2 + 3.0 * x + 1.0) / 6.0;
-    w[3] = x3 / 6.0;
-    d[0] = -0.5 * y * y;
-    d[1] = 1.5 * x2 - 2.0 * x;
-    d[2] = -1.5 * x2 + x + 0.5;
-    d[3] = 0.5 * x2;
-}
-
 namespace {
 
-// Stam's basis times 12, one row per point, over the monomials 1, s, t, s², st, t², s³, s²t,
-// st², t³, s⁴, s³t, s²t², st³, t⁴.
-constexpr double kBoxSpline[12][15] = {
-    {1, -2, -4, 0, 6, 6, 2, 0, -6, -4, -1, -2, 0, 2, 1},
-    {1, 2, -2, 0, -6, 0, -4, 0, 6, 2, 2, 4, 0, -2, -1},
-    {0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -1, -2, 0, 0, 0},
-    {1, -4, -2, 6, 6, 0, -4, -6, 0, 2, 1, 2, 0, -2, -1},
-    {6, 0, 0, -12, -12, -12, 8, 12, 12, 8, -1, -2, 0, -2, -1},
-    {1, 4, 2, 6, 6, 0, -4, -6, -12, -4, -1, -2, 0, 4, 2},
-    {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0},
-    {1, -2, 2, 0, -6, 0, 2, 6, 0, -4, -1, -2, 0, 4, 2},
-    {1, 2, 4, 0, 6, 6, -4, -12, -6, -4, 2, 4, 0, -2, -1},
-    {0, 0, 0, 0, 0, 0, 2, 6, 6, 2, -1, -2, 0, -2, -1},
-    {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
-    {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1},
-};
-// The same, one row per monomial.
+// The box spline's basis (patch_basis.h), one row per monomial.
 struct Transposed {
     double c[15][12];
 };
 constexpr Transposed transposed() {
     Transposed t{};
     for (int k = 0; k < 15; ++k)
-        for (int i = 0; i < 12; ++i) t.c[k][i] = kBoxSpline[i][k];
+        for (int i = 0; i < 12; ++i) t.c[k][i] = kBoxSplineMonomials[i][k];
     return t;
 }
 constexpr Transposed kBoxSplineByMonomial = transposed();
-
-constexpr int kPowerS[15] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0};
-constexpr int kPowerT[15] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4};
 
 // The tensor product of two n-point univariate bases (values l, derivatives d), point (i, j) at
 // [n j + i].
@@ -77,7 +46,7 @@ void boxSplineWeights(double s, double t, double wP[12], double wDs[12], double 
     const double ps[5] = {1, s, s * s, s * s * s, s * s * s * s}, pt[5] = {1, t, t * t, t * t * t, t * t * t * t};
     double m[15], ms[15], mt[15];
     for (int k = 0; k < 15; ++k) {
-        const int a = kPowerS[k], b = kPowerT[k];
+        const int a = kBoxSplinePowerS[k], b = kBoxSplinePowerT[k];
         m[k] = ps[a] * pt[b];
         ms[k] = a > 0 ? a * ps[a - 1] * pt[b] : 0.0;
         mt[k] = b > 0 ? b * ps[a] * pt[b - 1] : 0.0;

@@ -6,6 +6,8 @@
 
 #include <quadtri/far/options.h>
 #include <quadtri/far/topology.h>
+#include "far/limit/limit_ring.h"
+#include "far/schemes/scheme.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -21,6 +23,25 @@ enum class PatchKind {
 
 // The kind of patch `face` of `level` is under `options.scheme`, its points into `points`.
 PatchKind regularPatch(const Topology& level, int face, const Options& options, std::vector<int>& points);
+
+// The same for many faces of one topology: each vertex's ring is ordered once, the first time a
+// face asks for it, and read by the faces around it after. One thread at a time.
+class RegularPatches {
+public:
+    RegularPatches(const Topology& level, const Options& options);
+    PatchKind of(int face, std::vector<int>& points);
+
+private:
+    static constexpr int kUnknown = -2, kIrregular = -1;
+    const Topology& t_;
+    SurfacePatches kinds_;
+    std::vector<int> ringAt_;     // per vertex: kUnknown, kIrregular, or where its ring starts in rings_
+    std::vector<int> rings_;      // a regular corner's faces, neighbours and opposite corners in ring order
+    std::vector<int> sizeOf_;     // per vertex: the size of all its faces, 0 if they differ, -1 unknown
+    std::vector<unsigned> seen_;  // per vertex: the stamp of the last patch that had it
+    unsigned stamp_ = 0;
+    VertexRing ring_;
+};
 
 }  // namespace internal
 }  // namespace v0

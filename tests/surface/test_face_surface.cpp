@@ -9,11 +9,17 @@
 #include <random>
 
 #include <quadtri/far/limit_surface.h>
+#include "far/surface/patch_points.h"
 #include "tests/sanitized.h"
 #include "tests/surface/surface_support.h"
 #include "tests/test_support.h"
 
 namespace quadtri::test {
+
+// baseline_patch_points.cpp
+void baselinePatchPoints(bool boxSpline, const int* sources, const float* control, int stride,
+                         const internal::PatchPoints& points);
+
 namespace {
 
 // Points of face f: random ones, its corners and points on its edges (where the tree goes
@@ -38,18 +44,24 @@ bool sameStencil(const LimitPointStencil& a, const LimitPointStencil& b) {
     return a.indices == b.indices && a.position == b.position && a.du == b.du && a.dv == b.dv;
 }
 
+// The mesh's level 0 under `scheme` into r, or why the scheme refuses the mesh (loop on quads).
+std::string refineUnder(const std::string& mesh, Scheme scheme, RefinedMesh& r) {
+    Options options;
+    options.scheme = scheme;
+    try {
+        r = refineMesh(mesh, 0, options);
+    } catch (const TopologyError& e) {
+        return e.what();
+    }
+    return {};
+}
+
 class FaceSurfaceAgreement : public testing::TestWithParam<std::tuple<std::string, Scheme>> {};
 
 TEST_P(FaceSurfaceAgreement, GivesEachPointTheStencilItHasAlone) {
     const auto& [mesh, scheme] = GetParam();
-    Options options;
-    options.scheme = scheme;
     RefinedMesh r;
-    try {
-        r = refineMesh(mesh, 0, options);
-    } catch (const TopologyError& e) {
-        GTEST_SKIP() << e.what();  // a mesh the scheme refuses (loop on quads)
-    }
+    if (const std::string refused = refineUnder(mesh, scheme, r); !refused.empty()) GTEST_SKIP() << refused;
     const LimitSurface surface(*r.refiner);
     const std::vector<float>& control = r.positions[0];
     std::mt19937 random(7);
@@ -109,6 +121,134 @@ INSTANTIATE_TEST_SUITE_P(AllMeshes, FaceSurfaceAgreement,
                          [](const auto& info) {
                              return testNameOf(std::get<0>(info.param) + "_" + toString(std::get<1>(info.param)));
                          });
+
+// A batch gives what the points give one at a time: bit for bit on bicubic patches and the
+// trees (the same sums in the same order), within rounding on box splines (their batch sums the
+// polynomial's monomials).
+class FaceSurfaceBatches : public testing::TestWithParam<std::tuple<std::string, Scheme>> {};
+
+TEST_P(FaceSurfaceBatches, AreThePointsOneAtATime) {
+    const auto& [mesh, scheme] = GetParam();
+    RefinedMesh r;
+    if (const std::string refused = refineUnder(mesh, scheme, r); !refused.empty()) GTEST_SKIP() << refused;
+    const LimitSurface surface(*r.refiner);
+    const bool exact = !rulesOf(scheme).surfacePatches().boxSplineTriangles;
+    // 5 floats a vertex, 6 apart: x y z, x + y, 1 (a partition of unity: value 1, derivatives 0).
+    const int n = surface.numControlVertices();
+    std::vector<float> control(std::size_t(n) * 6, 1e30f);
+    for (int i = 0; i < n; ++i) {
+        const float* p = &r.positions[0][3 * std::size_t(i)];
+        const float values[5] = {p[0], p[1], p[2], p[0] + p[1], 1.0f};
+        std::copy(values, values + 5, &control[6 * std::size_t(i)]);
+    }
+    std::mt19937 random(11);
+    FaceSurfaceFactory factory(surface);
+    FaceSurface face;
+    const int step = std::max(1, surface.numFaces() / (kSanitized ? 6 : 40));
+    for (int f = 0; f < surface.numFaces(); f += step) {
+        if (surface.isHole(f)) continue;
+        factory.faceSurface(f, face);
+        std::vector<double> u, v;
+        for (const auto& [a, b] : pointsOf(surface.parameterization(f), random)) {
+            u.push_back(a);
+            v.push_back(b);
+        }
+        const int count = int(u.size()), stride = 7;  // the batch's outputs 7 floats apart
+        std::vector<float> p(std::size_t(count) * stride, -7.0f), du = p, dv = p;
+        face.evaluate(count, u.data(), v.data(), control.data(), 5, 6, p.data(), du.data(), dv.data(), stride);
+        std::vector<float> q(std::size_t(count) * stride, -7.0f);
+        face.evaluate(count, u.data(), v.data(), control.data(), 5, 6, q.data(), nullptr, nullptr, stride);
+        for (int i = 0; i < count; ++i) {
+            float a[5], au[5], av[5];
+            face.evaluate(u[std::size_t(i)], v[std::size_t(i)], control.data(), 5, 6, a, au, av);
+            const std::size_t at = std::size_t(i) * stride;
+            for (int c = 0; c < 5; ++c) {
+                const float values[3] = {p[at + std::size_t(c)], du[at + std::size_t(c)], dv[at + std::size_t(c)]};
+                const float alone[3] = {a[c], au[c], av[c]};
+                for (int k = 0; k < 3; ++k) {
+                    if (exact)
+                        ASSERT_EQ(values[k], alone[k]) << mesh << " face " << f << " point " << i << " component " << c;
+                    else
+                        ASSERT_NEAR(values[k], alone[k], 2e-6 * (1 + std::abs(alone[k])))
+                            << mesh << " face " << f << " point " << i << " component " << c;
+                }
+                ASSERT_EQ(q[at + std::size_t(c)], p[at + std::size_t(c)]);
+            }
+            for (std::size_t c = 5; c < stride; ++c) ASSERT_EQ(p[at + c], -7.0f) << "written between points";
+            EXPECT_NEAR(p[at + 4], 1.0f, 1e-6f);
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(SomeMeshes, FaceSurfaceBatches,
+                         testing::Combine(testing::Values("mixed/mixed_torus.obj", "mixed/checker_cube.obj",
+                                                          "osd/catmark_torus_creases0.obj",
+                                                          "osd/loop_xord_interior.obj", "osd/catmark_fan.obj"),
+                                          testing::ValuesIn(allSchemes())),
+                         [](const auto& info) {
+                             return testNameOf(std::get<0>(info.param) + "_" + toString(std::get<1>(info.param)));
+                         });
+
+// The batch loops' AVX2 build (where the CPU runs it) sums as the baseline build does, bit for bit:
+// it is built without fused multiply-adds.
+TEST(FaceSurface, BatchLoopsAreTheBaselineLoopsBitForBit) {
+    std::mt19937 random(13);
+    std::uniform_real_distribution<float> value(-10.0f, 10.0f);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int width : {1, 2, 3, 4, 5, 7, 9}) {
+        const int stride = width + 2, numControl = 40;
+        std::vector<float> control(std::size_t(numControl * stride));
+        for (float& x : control) x = value(random);
+        int sources[16];
+        for (int& k : sources) k = int(unit(random) * numControl) % numControl;
+        for (int count : {1, 5, 8, 13, 40}) {
+            std::vector<double> u(static_cast<std::size_t>(count)), v(u);
+            for (int i = 0; i < count; ++i) {
+                u[std::size_t(i)] = unit(random);
+                v[std::size_t(i)] = unit(random) * (1 - u[std::size_t(i)]);
+            }
+            for (bool box : {false, true}) {
+                const std::size_t size = std::size_t(count * width);
+                std::vector<float> p(size), du(size), dv(size), q(size), dq(size), eq(size);
+                const internal::PatchPoints library{count, u.data(), v.data(), width, p.data(), du.data(), dv.data(), width};
+                const internal::PatchPoints baseline{count, u.data(), v.data(), width, q.data(), dq.data(), eq.data(), width};
+                if (box)
+                    internal::boxSplinePoints(sources, control.data(), stride, library);
+                else
+                    internal::bSplinePoints(sources, control.data(), stride, library);
+                baselinePatchPoints(box, sources, control.data(), stride, baseline);
+                EXPECT_EQ(p, q) << "width " << width << " count " << count << (box ? " box spline" : " B-spline");
+                EXPECT_EQ(du, dq) << "width " << width << " count " << count;
+                EXPECT_EQ(dv, eq) << "width " << width << " count " << count;
+            }
+        }
+    }
+}
+
+TEST(FaceSurface, RefusesABatchWithAPointOutsideBeforeWritingAny) {
+    const RefinedMesh r = refineMesh("mixed/mixed_torus.obj", 0);
+    const LimitSurface surface(*r.refiner);
+    FaceSurfaceFactory factory(surface);
+    for (int f : {0, 1, 2, 3}) {
+        FaceSurface face = factory.faceSurface(f);
+        const double u[3] = {0.2, 0.3, 1.5}, v[3] = {0.2, 0.1, 0.5};
+        float p[9];
+        std::fill(p, p + 9, -7.0f);
+        try {
+            face.evaluate(3, u, v, r.positions[0].data(), 3, 3, p);
+            FAIL() << "no error for face " << f;
+        } catch (const SurfaceError& e) {
+            EXPECT_NE(std::string(e.what()).find("point 2"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("face " + std::to_string(f)), std::string::npos) << e.what();
+        }
+        EXPECT_TRUE(std::all_of(p, p + 9, [](float x) { return x == -7.0f; }));
+    }
+    FaceSurface face = factory.faceSurface(0);
+    float p[3];
+    const double u = 0.5, v = 0.5;
+    EXPECT_THROW(face.evaluate(-1, &u, &v, r.positions[0].data(), 3, 3, p), SurfaceError);
+    face.evaluate(0, &u, &v, r.positions[0].data(), 3, 3, p);  // nothing to do
+}
 
 TEST(FaceSurface, FaceVaryingValuesAreThoseOfTheLimitSurface) {
     for (FVarLinearInterpolation fvar : {FVarLinearInterpolation::None, FVarLinearInterpolation::CornersOnly,
