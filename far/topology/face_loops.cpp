@@ -7,6 +7,18 @@ namespace internal {
 FaceLoops FaceLoopSplitter::split(const int* verts, int n, std::vector<int>& faceVerts, std::vector<int>& faceSizes,
                                   std::vector<int>* corners) {
     FaceLoops result;
+    // Most faces are small and repeat no vertex: one loop, the face as given.
+    bool simple = n >= 3 && n <= 8;
+    for (int i = 1; simple && i < n; ++i)
+        for (int j = 0; j < i; ++j) simple = simple && verts[i] != verts[j];
+    if (simple) {
+        faceVerts.insert(faceVerts.end(), verts, verts + n);
+        if (corners)
+            for (int i = 0; i < n; ++i) corners->push_back(i);
+        faceSizes.push_back(n);
+        result.loops = 1;
+        return result;
+    }
     auto emit = [&](std::size_t from) {  // walk_[from ..) is a closed loop
         const int size = int(walk_.size() - from);
         if (size < 3) {
