@@ -457,7 +457,7 @@ def section(r, note):
         lines += [""] + limit_summary(r)
     if r.get("surface_cases"):
         lines += ["", "Surface evaluation at random (u, v), 8 a face (1 with `--quick`), grouped by face, serial, 3 floats:"
-                  " position, du, dv, then the unit normal (quadtri: `FaceSurfaceFactory` + `FaceSurface::evaluate`;"
+                  " position, du, dv, then the unit normal (quadtri: `FaceSurfaceFactory` + `FaceSurface::evaluate` of a face's points as one batch;"
                   " OpenSubdiv: `Bfr::Surface` at its default approximation levels 2 smooth / 6 sharp and at 10, and"
                   " `Far::PatchTable` adaptive to level 2 with Gregory end caps, `Far::PatchMap` and"
                   " `Osd::CpuEvaluator::EvalPatches`, its local points by a stencil table each time). Factory: from the"

@@ -295,29 +295,39 @@ LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, cons
 
 namespace {
 
-// N components of a located point: its leaf's rows over the control values (column j reads
-// control[sources[j] * stride]), the derivatives taken to the face's (u, v).
+// N components of a located point's leaf points (its rows over the control values, column j at
+// control[sources[j] * stride + c]), in double: what every point in that leaf sums.
 template <int N>
-void combine(const FaceTree& tree, const FaceTree::Located& at, const int* sources, const float* control, int stride,
-             float* const out[3]) {
-    double p[N] = {}, s[N] = {}, t[N] = {};
+void leafPoints(const FaceTree& tree, const FaceTree::Located& at, const int* sources, const float* control,
+                int stride, int c, double points[][N]) {
     for (int i = 0; i < at.count; ++i) {
+        double q[N] = {};
         const int row = at.firstRow + i;
         for (int k = tree.rowBegin(row); k < tree.rowBegin(row + 1); ++k) {
             const double x = tree.rowWeight(k);
-            const double a = at.wP[i] * x, b = at.wDs[i] * x, d = at.wDt[i] * x;
-            const float* src = control + std::size_t(sources[tree.rowColumn(k)]) * std::size_t(stride);
-            for (int c = 0; c < N; ++c) {
-                p[c] += a * src[c];
-                s[c] += b * src[c];
-                t[c] += d * src[c];
-            }
+            const float* src = control + std::size_t(sources[tree.rowColumn(k)]) * std::size_t(stride) + c;
+            for (int j = 0; j < N; ++j) q[j] += x * src[j];
         }
+        for (int j = 0; j < N; ++j) points[i][j] = q[j];
     }
-    for (int c = 0; c < N; ++c) {
-        out[0][c] = float(p[c]);
-        if (out[1]) out[1][c] = float(s[c] * at.k[0][0] + t[c] * at.k[1][0]);
-        if (out[2]) out[2][c] = float(s[c] * at.k[0][1] + t[c] * at.k[1][1]);
+}
+
+// Components [c, c + N) of a located point from its leaf's points: the basis's sums, the
+// derivatives taken to the face's (u, v).
+template <int N>
+void leafPoint(const FaceTree::Located& at, const double points[][N], int c, float* position, float* dPdu,
+               float* dPdv) {
+    double p[N] = {}, s[N] = {}, t[N] = {};
+    for (int i = 0; i < at.count; ++i)
+        for (int j = 0; j < N; ++j) {
+            p[j] += at.wP[i] * points[i][j];
+            s[j] += at.wDs[i] * points[i][j];
+            t[j] += at.wDt[i] * points[i][j];
+        }
+    for (int j = 0; j < N; ++j) {
+        position[c + j] = float(p[j]);
+        if (dPdu) dPdu[c + j] = float(s[j] * at.k[0][0] + t[j] * at.k[1][0]);
+        if (dPdv) dPdv[c + j] = float(s[j] * at.k[0][1] + t[j] * at.k[1][1]);
     }
 }
 
@@ -483,8 +493,9 @@ void FaceSurface::evaluate(double u, double v, const float* control, int width, 
     FaceTree::Located at;
     tree_->locate(u, v, at);
     byComponentGroups(width, [&](auto n, int c) {
-        float* const out[3] = {position + c, dPdu ? dPdu + c : nullptr, dPdv ? dPdv + c : nullptr};
-        combine<decltype(n)::value>(*tree_, at, sources, control + c, stride, out);
+        double points[16][decltype(n)::value];
+        leafPoints<decltype(n)::value>(*tree_, at, sources, control, stride, c, points);
+        leafPoint<decltype(n)::value>(at, points, c, position, dPdu, dPdv);
     });
 }
 
@@ -499,10 +510,34 @@ void FaceSurface::evaluate(int count, const double* u, const double* v, const fl
     case FaceTree::Leaf::BoxSpline: return boxSplinePoints(sources, control, stride, points);
     default: break;
     }
+    // Any other face: each point located in the tree, then the points leaf by leaf, each leaf's
+    // points summed once for all of its points (the same sums as one point at a time).
+    thread_local std::vector<FaceTree::Located> located;
+    thread_local std::vector<int> order;
+    located.resize(std::size_t(count));
+    order.resize(std::size_t(count));
     for (int i = 0; i < count; ++i) {
-        const std::size_t at = std::size_t(i) * std::size_t(points.outStride);
-        evaluate(u[i], v[i], control, width, stride, position + at, dPdu ? dPdu + at : nullptr,
-                 dPdv ? dPdv + at : nullptr);
+        tree_->locate(u[i], v[i], located[std::size_t(i)]);
+        order[std::size_t(i)] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return located[std::size_t(a)].firstRow < located[std::size_t(b)].firstRow;
+    });
+    for (int first = 0, end = 0; first < count; first = end) {
+        const int leaf = located[std::size_t(order[std::size_t(first)])].firstRow;
+        while (end < count && located[std::size_t(order[std::size_t(end)])].firstRow == leaf) ++end;
+        byComponentGroups(width, [&](auto n, int c) {
+            constexpr int N = decltype(n)::value;
+            double leafValues[16][N];
+            leafPoints<N>(*tree_, located[std::size_t(order[std::size_t(first)])], sources, control, stride, c,
+                          leafValues);
+            for (int k = first; k < end; ++k) {
+                const int i = order[std::size_t(k)];
+                const std::size_t at = std::size_t(i) * std::size_t(points.outStride);
+                leafPoint<N>(located[std::size_t(i)], leafValues, c, position + at, dPdu ? dPdu + at : nullptr,
+                             dPdv ? dPdv + at : nullptr);
+            }
+        });
     }
 }
 
