@@ -89,6 +89,7 @@ FaceTree::FaceTree(Leaf kind, const FaceParameterization& param) : param_(param)
     root.quad = kind == Leaf::BSpline || kind == Leaf::Bilinear;
     nodes_.push_back(std::move(root));
     for (int i = 0; i < numColumns_; ++i) {
+        rowSlots_.push_back(i);
         rowColumns_.push_back(i);
         rowWeights_.push_back(1.0);
         rowOffsets_.push_back(i + 1);
@@ -200,6 +201,12 @@ void FaceTree::gatherColumns(Node& leaf, int points) {
     std::sort(leafColumns_.begin() + leaf.firstColumn, leafColumns_.end());
     leaf.numColumns = int(leafColumns_.size()) - leaf.firstColumn;
     for (auto j = leafColumns_.begin() + leaf.firstColumn; j != leafColumns_.end(); ++j) marked_[std::size_t(*j)] = 0;
+    // Each row entry's place among the leaf's columns.
+    slot_.resize(std::size_t(numColumns_));
+    for (int s = 0; s < leaf.numColumns; ++s) slot_[std::size_t(leafColumns_[std::size_t(leaf.firstColumn + s)])] = s;
+    rowSlots_.resize(rowColumns_.size());
+    for (int k = rowBegin(leaf.firstRow); k < rowBegin(leaf.firstRow + points); ++k)
+        rowSlots_[std::size_t(k)] = slot_[std::size_t(rowColumns_[std::size_t(k)])];
 }
 
 void FaceTree::locate(double u, double v, Located& out) {

@@ -58,6 +58,10 @@ public:
     int rowBegin(int r) const { return rowOffsets_[std::size_t(r)]; }
     int rowColumn(int k) const { return rowColumns_[std::size_t(k)]; }
     double rowWeight(int k) const { return rowWeights_[std::size_t(k)]; }
+    // A leaf row entry's column as its place among the leaf's columns (Located::firstColumn ..),
+    // and those columns.
+    int rowSlot(int k) const { return rowSlots_[std::size_t(k)]; }
+    int leafColumn(int i) const { return leafColumns_[std::size_t(i)]; }
 
 private:
     struct Node {
@@ -109,6 +113,8 @@ private:
     std::vector<int> rowOffsets_{0}, rowColumns_;
     std::vector<double> rowWeights_;
     std::vector<int> leafColumns_;
+    std::vector<int> rowSlots_;  // per row entry of a leaf: rowSlot
+    std::vector<int> slot_;      // per column, while gathering
     std::vector<unsigned char> marked_;  // per column, while gathering
     WalkScratch scratch_;
     std::vector<double> p_, ds_, dt_;  // per column

@@ -296,17 +296,24 @@ LimitStencilTable LimitSurface::tableOf(int c, int count, const int* faces, cons
 namespace {
 
 // N components of a located point's leaf points (its rows over the control values, column j at
-// control[sources[j] * stride + c]), in double: what every point in that leaf sums.
+// control[sources[j] * stride + c]), in double: what every point in that leaf sums. The leaf's
+// columns are read once each, then the rows sum them.
 template <int N>
 void leafPoints(const FaceTree& tree, const FaceTree::Located& at, const int* sources, const float* control,
                 int stride, int c, double points[][N]) {
+    thread_local std::vector<double> columns;
+    columns.resize(std::size_t(at.numColumns) * N);
+    for (int i = 0; i < at.numColumns; ++i) {
+        const float* src = control + std::size_t(sources[tree.leafColumn(at.firstColumn + i)]) * std::size_t(stride) + c;
+        for (int j = 0; j < N; ++j) columns[std::size_t(i) * N + std::size_t(j)] = src[j];
+    }
     for (int i = 0; i < at.count; ++i) {
         double q[N] = {};
         const int row = at.firstRow + i;
         for (int k = tree.rowBegin(row); k < tree.rowBegin(row + 1); ++k) {
             const double x = tree.rowWeight(k);
-            const float* src = control + std::size_t(sources[tree.rowColumn(k)]) * std::size_t(stride) + c;
-            for (int j = 0; j < N; ++j) q[j] += x * src[j];
+            const double* column = &columns[std::size_t(tree.rowSlot(k)) * N];
+            for (int j = 0; j < N; ++j) q[j] += x * column[j];
         }
         for (int j = 0; j < N; ++j) points[i][j] = q[j];
     }
