@@ -38,8 +38,10 @@ struct StartedRing {
     const int* neighbours;
     const int* opposite;
     int start, valence;
-    int neighbour(int k) const { return neighbours[(start + k) % valence]; }
-    int across(int k) const { return opposite[(start + k) % valence]; }
+    // k in [0, valence)
+    int at(int k) const { return start + k < valence ? start + k : start + k - valence; }
+    int neighbour(int k) const { return neighbours[at(k)]; }
+    int across(int k) const { return opposite[at(k)]; }
 };
 
 // The 16 points of a regular quad: corner i at grid (1,1), (2,1), (2,2), (1,2); its ring,
