@@ -165,7 +165,7 @@ private:
     // The kept columns, in blocks that never move (a block's worth of faces per allocation).
     std::vector<std::unique_ptr<int[]>> keptBlocks_;
     int keptUsed_ = 0, keptCapacity_ = 0;
-    std::vector<int> columns_;
+    std::vector<int> columns_;  // keptTreeOf's scratch for treeOf
 };
 
 }  // namespace internal

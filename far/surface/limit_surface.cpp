@@ -518,33 +518,38 @@ void FaceSurface::evaluate(int count, const double* u, const double* v, const fl
     default: break;
     }
     // Any other face: each point located in the tree, then the points leaf by leaf, each leaf's
-    // points summed once for all of its points (the same sums as one point at a time).
+    // points summed once for all of its points (the same sums as one point at a time); in chunks,
+    // so that the scratch stays small whatever the batch.
+    constexpr int kChunk = 256;
     thread_local std::vector<FaceTree::Located> located;
     thread_local std::vector<int> order;
-    located.resize(std::size_t(count));
-    order.resize(std::size_t(count));
-    for (int i = 0; i < count; ++i) {
-        tree_->locate(u[i], v[i], located[std::size_t(i)]);
-        order[std::size_t(i)] = i;
-    }
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-        return located[std::size_t(a)].firstRow < located[std::size_t(b)].firstRow;
-    });
-    for (int first = 0, end = 0; first < count; first = end) {
-        const int leaf = located[std::size_t(order[std::size_t(first)])].firstRow;
-        while (end < count && located[std::size_t(order[std::size_t(end)])].firstRow == leaf) ++end;
-        byComponentGroups(width, [&](auto n, int c) {
-            constexpr int N = decltype(n)::value;
-            double leafValues[16][N];
-            leafPoints<N>(*tree_, located[std::size_t(order[std::size_t(first)])], sources, control, stride, c,
-                          leafValues);
-            for (int k = first; k < end; ++k) {
-                const int i = order[std::size_t(k)];
-                const std::size_t at = std::size_t(i) * std::size_t(points.outStride);
-                leafPoint<N>(located[std::size_t(i)], leafValues, c, position + at, dPdu ? dPdu + at : nullptr,
-                             dPdv ? dPdv + at : nullptr);
-            }
+    for (int begin = 0; begin < count; begin += kChunk) {
+        const int size = std::min(kChunk, count - begin);
+        located.resize(std::size_t(size));
+        order.resize(std::size_t(size));
+        for (int i = 0; i < size; ++i) {
+            tree_->locate(u[begin + i], v[begin + i], located[std::size_t(i)]);
+            order[std::size_t(i)] = i;
+        }
+        auto leafOf = [&](int k) { return located[std::size_t(order[std::size_t(k)])].firstRow; };
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            return located[std::size_t(a)].firstRow < located[std::size_t(b)].firstRow;
         });
+        for (int first = 0, end = 0; first < size; first = end) {
+            while (end < size && leafOf(end) == leafOf(first)) ++end;
+            byComponentGroups(width, [&](auto n, int c) {
+                constexpr int N = decltype(n)::value;
+                double leafValues[16][N];
+                leafPoints<N>(*tree_, located[std::size_t(order[std::size_t(first)])], sources, control, stride, c,
+                              leafValues);
+                for (int k = first; k < end; ++k) {
+                    const int i = order[std::size_t(k)];
+                    const std::size_t at = std::size_t(begin + i) * std::size_t(points.outStride);
+                    leafPoint<N>(located[std::size_t(i)], leafValues, c, position + at, dPdu ? dPdu + at : nullptr,
+                                 dPdv ? dPdv + at : nullptr);
+                }
+            });
+        }
     }
 }
 

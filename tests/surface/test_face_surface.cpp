@@ -225,6 +225,43 @@ TEST(FaceSurface, BatchLoopsAreTheBaselineLoopsBitForBit) {
     }
 }
 
+// More points than one chunk of the tree path's scratch, on faces whose points go through their
+// trees (a triangle under catmull-clark: three sub-faces) and on a regular quad.
+TEST(FaceSurface, LongBatchesAreThePointsOneAtATime) {
+    Options options;
+    options.scheme = Scheme::CatmullClark;
+    const RefinedMesh r = refineMesh("mixed/mixed_torus.obj", 0, options);
+    const LimitSurface surface(*r.refiner);
+    FaceSurfaceFactory factory(surface);
+    std::mt19937 random(17);
+    int triangles = 0;
+    for (int f = 0; f < surface.numFaces() && triangles < 2; ++f) {
+        const FaceParameterization param = surface.parameterization(f);
+        if (param.faceSize != 3 && f != 0) continue;
+        triangles += param.faceSize == 3;
+        FaceSurface face = factory.faceSurface(f);
+        std::vector<double> u, v;
+        for (int k = 0; k < 700; ++k) {
+            const auto [a, b] = randomPointOf(param, k, random);
+            u.push_back(a);
+            v.push_back(b);
+        }
+        const std::size_t size = 3 * u.size();
+        std::vector<float> p(size), du(size), dv(size);
+        face.evaluate(int(u.size()), u.data(), v.data(), r.positions[0].data(), 3, 3, p.data(), du.data(), dv.data());
+        for (std::size_t i = 0; i < u.size(); ++i) {
+            float a[3], au[3], av[3];
+            face.evaluate(u[i], v[i], r.positions[0].data(), 3, 3, a, au, av);
+            for (std::size_t c = 0; c < 3; ++c) {
+                ASSERT_EQ(p[3 * i + c], a[c]) << "face " << f << " point " << i;
+                ASSERT_EQ(du[3 * i + c], au[c]) << "face " << f << " point " << i;
+                ASSERT_EQ(dv[3 * i + c], av[c]) << "face " << f << " point " << i;
+            }
+        }
+    }
+    EXPECT_EQ(triangles, 2);
+}
+
 TEST(FaceSurface, RefusesABatchWithAPointOutsideBeforeWritingAny) {
     const RefinedMesh r = refineMesh("mixed/mixed_torus.obj", 0);
     const LimitSurface surface(*r.refiner);
