@@ -173,7 +173,8 @@ public:
     // `count` points (u[i], v[i]) at once, as many calls of the above would give them: point i's
     // position at position[i * outStride] (dPdu, dPdv likewise, where not null; outStride 0 is
     // `width`). A regular face reads its control points once for all of them. Throws SurfaceError,
-    // naming the point's index, before anything is written if a point is outside the domain.
+    // naming the point's index, before anything is written if a point is outside the domain (and
+    // for an empty surface, a negative count, an outStride below width).
     void evaluate(int count, const double* u, const double* v, const float* control, int width, int stride,
                   float* position, float* dPdu = nullptr, float* dPdv = nullptr, int outStride = 0);
 

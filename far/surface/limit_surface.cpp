@@ -508,7 +508,11 @@ void FaceSurface::evaluate(double u, double v, const float* control, int width, 
 
 void FaceSurface::evaluate(int count, const double* u, const double* v, const float* control, int width, int stride,
                            float* position, float* dPdu, float* dPdv, int outStride) {
+    parameterization();  // SurfaceError for an empty surface
     if (count < 0) throw SurfaceError("FaceSurface::evaluate: " + std::to_string(count) + " points");
+    if (outStride != 0 && outStride < width)
+        throw SurfaceError("FaceSurface::evaluate: outputs " + std::to_string(outStride) + " floats apart hold " +
+                           std::to_string(width) + " each");
     for (int i = 0; i < count; ++i) check(u[i], v[i], i);
     const PatchPoints points{count, u, v, width, position, dPdu, dPdv, outStride > 0 ? outStride : width};
     const int* sources = valueOf_ ? sources_.data() : columns_;

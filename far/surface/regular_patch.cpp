@@ -102,12 +102,12 @@ bool distinctPairwise(const std::vector<int>& points) {
     return true;
 }
 
-// The patch of `face` (regularPatch), its corners' rings from ringOf(v) (a StartedRing at the
-// face, or one whose valence is 0 where v is not a regular corner), "v has only faces of size
-// n" from pure(v, n), whether no point repeats from distinct(points).
-template <class RingOf, class Pure, class Distinct>
-PatchKind patchOf(const Topology& t, int face, const SurfacePatches& kinds, RingOf&& ringOf, Pure&& pure,
-                  Distinct&& distinct, std::vector<int>& points) {
+// The patch of `face` (regularPatch): whether v may be its corner from corner(v), a corner's ring
+// started at the face from ringOf(v), "v has only faces of size n" from pure(v, n), whether no
+// point repeats from distinct(points).
+template <class Corner, class RingOf, class Pure, class Distinct>
+PatchKind patchOf(const Topology& t, int face, const SurfacePatches& kinds, Corner&& corner, RingOf&& ringOf,
+                  Pure&& pure, Distinct&& distinct, std::vector<int>& points) {
     const IndexSpan corners = t.verticesOfFace(face);
     const int n = corners.size();
     points.clear();
@@ -121,7 +121,7 @@ PatchKind patchOf(const Topology& t, int face, const SurfacePatches& kinds, Ring
     const bool quad = n == 4 && kinds.bSplineQuads, triangle = n == 3 && kinds.boxSplineTriangles;
     if (!quad && !triangle) return PatchKind::None;
     for (int v : corners)
-        if (ringOf(v).valence == 0) return PatchKind::None;
+        if (!corner(v)) return PatchKind::None;
     if (quad)
         quadPoints(t, face, ringOf, points);
     else
@@ -139,14 +139,15 @@ PatchKind patchOf(const Topology& t, int face, const SurfacePatches& kinds, Ring
 
 PatchKind regularPatch(const Topology& t, int face, const Options& options, std::vector<int>& points) {
     thread_local VertexRing ring;  // its lists keep their memory from call to call
+    const int valence = t.faceSize(face) == 4 ? 4 : 6;
+    auto corner = [&](int v) { return regularCorner(t, v, t.faceSize(face), valence); };
     auto ringOf = [&](int v) {
-        const int n = t.faceSize(face), valence = n == 4 ? 4 : 6;
-        if (!regularCorner(t, v, n, valence)) return StartedRing{nullptr, nullptr, 0, 0};
         orderVertexRing(t, v, face, ring);
         return StartedRing{ring.neighbours.data(), ring.opposite.data(), 0, valence};
     };
     auto pure = [&](int v, int n) { return onlyFacesOfSize(t, v, n); };
-    return patchOf(t, face, rulesOf(options.scheme).surfacePatches(), ringOf, pure, distinctPairwise, points);
+    return patchOf(t, face, rulesOf(options.scheme).surfacePatches(), corner, ringOf, pure, distinctPairwise,
+                   points);
 }
 
 RegularPatches::RegularPatches(const Topology& t, const Options& options)
@@ -157,12 +158,13 @@ RegularPatches::RegularPatches(const Topology& t, const Options& options)
       seen_(std::size_t(t.numVertices), 0) {}
 
 PatchKind RegularPatches::of(int face, std::vector<int>& points) {
-    auto ringOf = [&](int v) {
+    // A regular corner's faces all have the asking face's size: its valence follows.
+    const int valence = t_.faceSize(face) == 4 ? 4 : 6;
+    auto corner = [&](int v) {
         int& at = ringAt_[std::size_t(v)];
         if (at == kUnknown) {
-            const int n = t_.faceSize(face), valence = n == 4 ? 4 : 6;
             at = kIrregular;
-            if (regularCorner(t_, v, n, valence)) {
+            if (regularCorner(t_, v, t_.faceSize(face), valence)) {
                 orderVertexRing(t_, v, face, ring_);
                 at = int(rings_.size());
                 rings_.insert(rings_.end(), ring_.faces.begin(), ring_.faces.end());
@@ -170,10 +172,10 @@ PatchKind RegularPatches::of(int face, std::vector<int>& points) {
                 rings_.insert(rings_.end(), ring_.opposite.begin(), ring_.opposite.end());
             }
         }
-        if (at == kIrregular) return StartedRing{nullptr, nullptr, 0, 0};
-        // A regular corner's faces all have the asking face's size: its valence follows.
-        const int valence = t_.faceSize(face) == 4 ? 4 : 6;
-        const int* faces = rings_.data() + at;
+        return at != kIrregular;
+    };
+    auto ringOf = [&](int v) {
+        const int* faces = rings_.data() + ringAt_[std::size_t(v)];
         const int start = int(std::find(faces, faces + valence, face) - faces);
         return StartedRing{faces + valence, faces + 2 * valence, start, valence};
     };
@@ -193,7 +195,7 @@ PatchKind RegularPatches::of(int face, std::vector<int>& points) {
         }
         return true;
     };
-    return patchOf(t_, face, kinds_, ringOf, pure, distinct, points);
+    return patchOf(t_, face, kinds_, corner, ringOf, pure, distinct, points);
 }
 
 }  // namespace internal

@@ -284,7 +284,10 @@ TEST(FaceSurface, RefusesABatchWithAPointOutsideBeforeWritingAny) {
     float p[3];
     const double u = 0.5, v = 0.5;
     EXPECT_THROW(face.evaluate(-1, &u, &v, r.positions[0].data(), 3, 3, p), SurfaceError);
+    EXPECT_THROW(face.evaluate(1, &u, &v, r.positions[0].data(), 3, 3, p, nullptr, nullptr, 2), SurfaceError);
     face.evaluate(0, &u, &v, r.positions[0].data(), 3, 3, p);  // nothing to do
+    FaceSurface empty;
+    EXPECT_THROW(empty.evaluate(0, &u, &v, r.positions[0].data(), 3, 3, p), SurfaceError);
 }
 
 TEST(FaceSurface, FaceVaryingValuesAreThoseOfTheLimitSurface) {
