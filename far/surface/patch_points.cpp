@@ -11,20 +11,20 @@ namespace internal {
 
 void bSplinePoints(const int* sources, const float* control, int stride, const PatchPoints& points) {
     if (kernels::cpuRunsAvx2Kernels()) return bSplinePointsAvx2(sources, control, stride, points);
-    byGroups(points, [&](auto n, int c) { bSplineLanes<decltype(n)::value>(sources, control, stride, c, points); });
+    bSplineBatch(sources, control, stride, points);
 }
 
 void boxSplinePoints(const int* sources, const float* control, int stride, const PatchPoints& points) {
     if (kernels::cpuRunsAvx2Kernels()) return boxSplinePointsAvx2(sources, control, stride, points);
-    byGroups(points, [&](auto n, int c) { boxSplineLanes<decltype(n)::value>(sources, control, stride, c, points); });
+    boxSplineBatch(sources, control, stride, points);
 }
 
 #if !defined(QUADTRI_HAVE_AVX2_KERNELS)
 void bSplinePointsAvx2(const int* sources, const float* control, int stride, const PatchPoints& points) {
-    byGroups(points, [&](auto n, int c) { bSplineLanes<decltype(n)::value>(sources, control, stride, c, points); });
+    bSplineBatch(sources, control, stride, points);
 }
 void boxSplinePointsAvx2(const int* sources, const float* control, int stride, const PatchPoints& points) {
-    byGroups(points, [&](auto n, int c) { boxSplineLanes<decltype(n)::value>(sources, control, stride, c, points); });
+    boxSplineBatch(sources, control, stride, points);
 }
 #endif
 

@@ -7,11 +7,11 @@ inline namespace v0 {
 namespace internal {
 
 void bSplinePointsAvx2(const int* sources, const float* control, int stride, const PatchPoints& points) {
-    byGroups(points, [&](auto n, int c) { bSplineLanes<decltype(n)::value>(sources, control, stride, c, points); });
+    bSplineBatch(sources, control, stride, points);
 }
 
 void boxSplinePointsAvx2(const int* sources, const float* control, int stride, const PatchPoints& points) {
-    byGroups(points, [&](auto n, int c) { boxSplineLanes<decltype(n)::value>(sources, control, stride, c, points); });
+    boxSplineBatch(sources, control, stride, points);
 }
 
 }  // namespace internal

@@ -130,9 +130,16 @@ void boxSplineLanes(const int* sources, const float* control, int stride, int c,
     });
 }
 
-template <class Lanes>
-void byGroups(const PatchPoints& points, Lanes&& lanes) {
-    byComponentGroups(points.width, [&](auto n, int c) { lanes(n, c); });
+// Every component group of a batch of a regular quad's (triangle's) points.
+inline void bSplineBatch(const int* sources, const float* control, int stride, const PatchPoints& points) {
+    byComponentGroups(points.width, [&](auto n, int c) {
+        bSplineLanes<decltype(n)::value>(sources, control, stride, c, points);
+    });
+}
+inline void boxSplineBatch(const int* sources, const float* control, int stride, const PatchPoints& points) {
+    byComponentGroups(points.width, [&](auto n, int c) {
+        boxSplineLanes<decltype(n)::value>(sources, control, stride, c, points);
+    });
 }
 
 }  // namespace

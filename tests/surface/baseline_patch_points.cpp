@@ -6,12 +6,10 @@ namespace quadtri::test {
 
 void baselinePatchPoints(bool boxSpline, const int* sources, const float* control, int stride,
                          const internal::PatchPoints& points) {
-    internal::byGroups(points, [&](auto n, int c) {
-        if (boxSpline)
-            internal::boxSplineLanes<decltype(n)::value>(sources, control, stride, c, points);
-        else
-            internal::bSplineLanes<decltype(n)::value>(sources, control, stride, c, points);
-    });
+    if (boxSpline)
+        internal::boxSplineBatch(sources, control, stride, points);
+    else
+        internal::bSplineBatch(sources, control, stride, points);
 }
 
 }  // namespace quadtri::test
