@@ -90,9 +90,9 @@ FaceTree::FaceTree(Leaf kind, const FaceParameterization& param) : param_(param)
     nodes_.push_back(std::move(root));
     for (int i = 0; i < numColumns_; ++i) {
         rowSlots_.push_back(i);
-        rowColumns_.push_back(i);
-        rowWeights_.push_back(1.0);
-        rowOffsets_.push_back(i + 1);
+        rows_.columns.push_back(i);
+        rows_.weights.push_back(1.0);
+        rows_.offsets.push_back(i + 1);
         leafColumns_.push_back(i);
     }
     nodes_[0].numColumns = numColumns_;
@@ -100,15 +100,19 @@ FaceTree::FaceTree(Leaf kind, const FaceParameterization& param) : param_(param)
     ds_ = dt_ = p_;
 }
 
-FaceTree::FaceTree(LocalMesh root, const Options& options, const LimitSurfaceOptions& surfaceOptions,
-                   Sharpen sharpen, const FaceParameterization& param)
-    : options_(options), surfaceOptions_(surfaceOptions), sharpen_(sharpen), param_(param) {
-    const SchemeRules& rules = rulesOf(options.scheme);
-    rings_ = surfaceOptions.rings > 0 ? surfaceOptions.rings : rules.surfaceRings();
-    linear_ = sharpen == Sharpen::All && rules.surfacePatches().sharpIsLinear;
-    numColumns_ = root.numColumns;
+FaceTree::FaceTree(LocalShapes& shapes, LocalShape& root, const LimitSurfaceOptions& surfaceOptions,
+                   const FaceParameterization& param)
+    : shapes_(&shapes), surfaceOptions_(surfaceOptions), param_(param) {
+    numColumns_ = root.topology.numVertices;
     Node node;
-    node.mesh = std::make_unique<LocalMesh>(std::move(root));
+    node.shape = &root;
+    node.rows = std::make_unique<LocalRows>();
+    LocalRows& rows = *node.rows;
+    for (int v = 0; v < numColumns_; ++v) {
+        rows.columns.push_back(v);
+        rows.weights.push_back(1.0);
+        rows.offsets.push_back(v + 1);
+    }
     nodes_.push_back(std::move(node));
     p_.assign(std::size_t(numColumns_), 0.0);
     ds_ = dt_ = p_;
@@ -118,81 +122,89 @@ FaceTree::FaceTree(LocalMesh root, const Options& options, const LimitSurfaceOpt
 
 FaceTree::~FaceTree() = default;
 
-int FaceTree::child(int node, int which) {
-    int& slot = children_[std::size_t(nodes_[std::size_t(node)].firstChild + which)];
+int FaceTree::child(int node, int which, int depth) {
+    const int slot = children_[std::size_t(nodes_[std::size_t(node)].firstChild + which)];
     if (slot >= 0) return slot;
-    Node made;
-    made.mesh = std::make_unique<LocalMesh>(
-        refineTowards(*nodes_[std::size_t(node)].mesh, which, rings_, options_, scratch_, nullptr, sharpen_));
+    const LocalStep& step = shapes_->step(*nodes_[std::size_t(node)].shape, which);
     const int id = int(nodes_.size());
     children_[std::size_t(nodes_[std::size_t(node)].firstChild + which)] = id;
-    nodes_.push_back(std::move(made));
+    nodes_.emplace_back();
+    nodes_.back().shape = step.child;
+    classify(id, depth, nodes_[std::size_t(node)].rows.get(), &step);
     Node& parent = nodes_[std::size_t(node)];
-    if (++parent.numBuilt == parent.numChildren) parent.mesh.reset();
+    if (++parent.numBuilt == parent.numChildren) parent.rows.reset();
     return id;
 }
 
-void FaceTree::classify(int id, int depth) {
-    if (nodes_[std::size_t(id)].classified) return;
+void FaceTree::classify(int id, int depth, const LocalRows* parentRows, const LocalStep* step) {
     Node& node = nodes_[std::size_t(id)];
-    const LocalMesh& mesh = *node.mesh;
+    LocalShape& shape = *node.shape;
+    shapes_->classify(shape);
     node.classified = true;
-    node.quad = mesh.topology.faceSize(mesh.face) == 4;
-    node.firstRow = int(rowOffsets_.size()) - 1;
+    node.quad = shape.topology.faceSize(shape.face) == 4;
+    node.firstRow = rows_.size();
+    // Vertex v's row, appended to `out`.
+    auto rowOf = [&](int v, LocalRows& out) {
+        if (step) {
+            const int first = step->offsets[std::size_t(v)];
+            composeRow(step->indices.data() + first, step->weights.data() + first,
+                       step->offsets[std::size_t(v) + 1] - first, *parentRows, sum_, out);
+        } else {
+            const SparseRow row = node.rows->row(v);
+            out.columns.insert(out.columns.end(), row.columns, row.columns + row.size);
+            out.weights.insert(out.weights.end(), row.weights, row.weights + row.size);
+            out.offsets.push_back(int(out.columns.size()));
+        }
+    };
 
-    PatchKind kind;
-    if (linear_) {
-        // Under Sharpen::All a face is its corners' bilinear (linear) patch.
-        const IndexSpan corners = mesh.topology.verticesOfFace(mesh.face);
-        points_.assign(corners.begin(), corners.end());
-        kind = corners.size() == 4 ? PatchKind::Bilinear : PatchKind::Linear;
-    } else {
-        kind = regularPatch(mesh.topology, mesh.face, options_, points_);
+    if (shape.patch != PatchKind::None) {
+        node.leaf = leafOf(shape.patch);
+        for (int p : shape.points) rowOf(p, rows_);
+        gatherColumns(node, int(shape.points.size()));
+        node.rows.reset();
+        return;
     }
-    if (kind != PatchKind::None) {
-        node.leaf = leafOf(kind);
-        const int points = int(points_.size());
-        for (int p : points_) {
-            const SparseRow row = mesh.row(p);
-            rowColumns_.insert(rowColumns_.end(), row.columns, row.columns + row.size);
-            rowWeights_.insert(rowWeights_.end(), row.weights, row.weights + row.size);
-            rowOffsets_.push_back(int(rowColumns_.size()));
-        }
-        gatherColumns(node, points);
-    } else if (depth >= surfaceOptions_.maxDepth) {
-        // The quadratic through the exact limit points of the sub-face's next level.
-        const SchemeRules& rules = rulesOf(options_.scheme);
-        const LocalMesh next = refineTowards(mesh, 0, rings_, options_, scratch_, &limitNodes_, sharpen_);
-        VertexRing ring;
-        LimitMask limit;
-        LimitMaskCache cache;
-        for (int vertex : limitNodes_) {
-            orderVertexRing(next.topology, vertex, -1, ring);
-            limit.clear();
-            rules.limitMask(LimitVertex{next.topology, options_, ring, limitRule(next.topology, ring)}, cache, limit);
-            for (int k = 0; k < limit.size(); ++k)
-                sum_.add(limit.position[std::size_t(k)], next.row(limit.indices[std::size_t(k)]));
-            sum_.take([&](int column, double weight) {
-                rowColumns_.push_back(column);
-                rowWeights_.push_back(weight);
-            });
-            rowOffsets_.push_back(int(rowColumns_.size()));
-        }
-        node.leaf = node.quad ? Leaf::QuadraticQuad : Leaf::QuadraticTriangle;
-        gatherColumns(node, int(limitNodes_.size()));
-    } else {
+    if (step) {
+        node.rows = std::make_unique<LocalRows>();
+        for (int v = 0; v < shape.topology.numVertices; ++v) rowOf(v, *node.rows);
+    }
+    if (depth < surfaceOptions_.maxDepth) {
         node.numChildren = 4;
         node.firstChild = int(children_.size());
         children_.insert(children_.end(), 4, -1);
         return;
     }
-    node.mesh.reset();
+    // The quadratic through the exact limit points of the sub-face's next level: the rows of the
+    // next level's vertices the masks read, then the masks' sums of them.
+    const LocalRows& masks = shapes_->limitMasks(shape);
+    const LocalStep& next = shapes_->step(shape, 0);
+    nextRow_.assign(std::size_t(next.child->topology.numVertices), -1);
+    next_ = LocalRows();
+    for (int v : masks.columns) {
+        if (nextRow_[std::size_t(v)] >= 0) continue;
+        nextRow_[std::size_t(v)] = next_.size();
+        const int first = next.offsets[std::size_t(v)];
+        composeRow(next.indices.data() + first, next.weights.data() + first, next.offsets[std::size_t(v) + 1] - first,
+                   *node.rows, sum_, next_);
+    }
+    for (int n = 0; n < masks.size(); ++n) {
+        for (int k = masks.offsets[std::size_t(n)]; k < masks.offsets[std::size_t(n) + 1]; ++k)
+            sum_.add(masks.weights[std::size_t(k)], next_.row(nextRow_[std::size_t(masks.columns[std::size_t(k)])]));
+        sum_.take([&](int column, double weight) {
+            rows_.columns.push_back(column);
+            rows_.weights.push_back(weight);
+        });
+        rows_.offsets.push_back(int(rows_.columns.size()));
+    }
+    node.leaf = node.quad ? Leaf::QuadraticQuad : Leaf::QuadraticTriangle;
+    gatherColumns(node, masks.size());
+    node.rows.reset();
 }
 
 void FaceTree::gatherColumns(Node& leaf, int points) {
     leaf.firstColumn = int(leafColumns_.size());
     for (int k = rowBegin(leaf.firstRow); k < rowBegin(leaf.firstRow + points); ++k) {
-        const int j = rowColumns_[std::size_t(k)];
+        const int j = rows_.columns[std::size_t(k)];
         if (!marked_[std::size_t(j)]) {
             marked_[std::size_t(j)] = 1;
             leafColumns_.push_back(j);
@@ -204,9 +216,9 @@ void FaceTree::gatherColumns(Node& leaf, int points) {
     // Each row entry's place among the leaf's columns.
     slot_.resize(std::size_t(numColumns_));
     for (int s = 0; s < leaf.numColumns; ++s) slot_[std::size_t(leafColumns_[std::size_t(leaf.firstColumn + s)])] = s;
-    rowSlots_.resize(rowColumns_.size());
+    rowSlots_.resize(rows_.columns.size());
     for (int k = rowBegin(leaf.firstRow); k < rowBegin(leaf.firstRow + points); ++k)
-        rowSlots_[std::size_t(k)] = slot_[std::size_t(rowColumns_[std::size_t(k)])];
+        rowSlots_[std::size_t(k)] = slot_[std::size_t(rows_.columns[std::size_t(k)])];
 }
 
 void FaceTree::locate(double u, double v, Located& out) {
@@ -222,14 +234,13 @@ void FaceTree::locate(double u, double v, Located& out) {
             root.firstChild = int(children_.size());
             children_.insert(children_.end(), std::size_t(param_.faceSize), -1);
         }
-        node = child(0, enterSubFace(param_, u, v, w));
+        node = child(0, enterSubFace(param_, u, v, w), 1);
         depth = 1;
+    } else if (!nodes_[0].classified) {
+        classify(0, 0, nullptr, nullptr);
     }
-    for (;; ++depth) {
-        classify(node, depth);
-        if (nodes_[std::size_t(node)].leaf != Leaf::None) break;
-        node = child(node, descend(nodes_[std::size_t(node)].quad, w));
-    }
+    for (; nodes_[std::size_t(node)].leaf == Leaf::None; ++depth)
+        node = child(node, descend(nodes_[std::size_t(node)].quad, w), depth + 1);
 
     const Node& leaf = nodes_[std::size_t(node)];
     out.firstRow = leaf.firstRow;
@@ -270,24 +281,12 @@ FaceTrees::FaceTrees(const Topology& base, const Options& options, const LimitSu
                      Sharpen sharpen, WalkScratch& baseScratch)
     : base_(base), options_(options), surfaceOptions_(surfaceOptions), sharpen_(sharpen),
       quadDomain_(FaceParameterization::of(options.scheme, 4)),
-      triangleDomain_(FaceParameterization::of(options.scheme, 3)), scratch_(baseScratch) {
-    const SchemeRules& rules = rulesOf(options.scheme);
-    rings_ = surfaceOptions.rings > 0 ? surfaceOptions.rings : rules.surfaceRings();
-    linear_ = sharpen == Sharpen::All && rules.surfacePatches().sharpIsLinear;
-}
+      triangleDomain_(FaceParameterization::of(options.scheme, 3)),
+      linear_(sharpen == Sharpen::All && rulesOf(options.scheme).surfacePatches().sharpIsLinear),
+      shapes_(options, surfaceOptions.rings > 0 ? surfaceOptions.rings : rulesOf(options.scheme).surfaceRings(), sharpen),
+      scratch_(baseScratch) {}
 
 FaceTrees::~FaceTrees() = default;
-
-namespace {
-
-template <class T>
-void append(std::string& key, const std::vector<T>& items) {
-    const std::size_t n = items.size();
-    key.append(reinterpret_cast<const char*>(&n), sizeof n);
-    key.append(reinterpret_cast<const char*>(items.data()), n * sizeof(T));
-}
-
-}  // namespace
 
 FaceTree& FaceTrees::treeOf(int face, std::vector<int>& columns) {
     const int size = base_.faceSize(face);
@@ -312,18 +311,9 @@ FaceTree& FaceTrees::treeOf(int face, std::vector<int>& columns) {
             return *tree;
         }
     }
-    LocalMesh cut = cutBase(base_, face, rings_, options_, scratch_, columns, sharpen_);
-    const Topology& t = cut.topology;
-    key_.assign(reinterpret_cast<const char*>(&cut.face), sizeof cut.face);
-    append(key_, t.faceOffsets);
-    append(key_, t.faceVerts);
-    append(key_, t.faceEdges);
-    append(key_, t.edgeVerts);
-    append(key_, t.edgeSharpness);
-    append(key_, t.vertSharpness);
-    append(key_, t.faceHole);
-    std::unique_ptr<FaceTree>& tree = trees_[key_];
-    if (!tree) tree = std::make_unique<FaceTree>(std::move(cut), options_, surfaceOptions_, sharpen_, param);
+    LocalShape& shape = shapes_.cut(base_, face, scratch_, columns);
+    std::unique_ptr<FaceTree>& tree = trees_[&shape];
+    if (!tree) tree = std::make_unique<FaceTree>(shapes_, shape, surfaceOptions_, param);
     return *tree;
 }
 

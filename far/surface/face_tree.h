@@ -5,7 +5,6 @@
 #pragma once
 
 #include <memory>
-#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -28,8 +27,9 @@ public:
 
     // A regular face: one leaf over its points.
     FaceTree(Leaf kind, const FaceParameterization& param);
-    // Any other face: the cut around it, refined as points ask.
-    FaceTree(LocalMesh root, const Options& options, const LimitSurfaceOptions& surfaceOptions, Sharpen sharpen,
+    // Any other face: the cut around it, refined as points ask, through the steps of `shapes`
+    // (which outlives the tree).
+    FaceTree(LocalShapes& shapes, LocalShape& root, const LimitSurfaceOptions& surfaceOptions,
              const FaceParameterization& param);
     ~FaceTree();
 
@@ -55,9 +55,9 @@ public:
 
     // Row r's weights over the columns: columns rowColumn(k), weights rowWeight(k) for k in
     // [rowBegin(r), rowBegin(r + 1)).
-    int rowBegin(int r) const { return rowOffsets_[std::size_t(r)]; }
-    int rowColumn(int k) const { return rowColumns_[std::size_t(k)]; }
-    double rowWeight(int k) const { return rowWeights_[std::size_t(k)]; }
+    int rowBegin(int r) const { return rows_.offsets[std::size_t(r)]; }
+    int rowColumn(int k) const { return rows_.columns[std::size_t(k)]; }
+    double rowWeight(int k) const { return rows_.weights[std::size_t(k)]; }
     // A leaf row entry's column as its place among the leaf's columns (Located::firstColumn ..),
     // and those columns.
     int rowSlot(int k) const { return rowSlots_[std::size_t(k)]; }
@@ -65,7 +65,8 @@ public:
 
 private:
     struct Node {
-        std::unique_ptr<LocalMesh> mesh;  // kept until the node is a leaf or all its children exist
+        LocalShape* shape = nullptr;
+        std::unique_ptr<LocalRows> rows;  // its shape's vertices', while it has children to make
         int firstChild = -1;              // into children_, numChildren slots
         int numChildren = 0, numBuilt = 0;
         int firstRow = 0;                 // a leaf's points: rows firstRow .. firstRow + points
@@ -81,9 +82,9 @@ private:
     void visitWeights(const Located& at, Visit&& visit) {
         for (int i = 0; i < at.count; ++i) {
             const int row = at.firstRow + i;
-            for (int k = rowOffsets_[std::size_t(row)]; k < rowOffsets_[std::size_t(row) + 1]; ++k) {
-                const std::size_t j = std::size_t(rowColumns_[std::size_t(k)]);
-                const double x = rowWeights_[std::size_t(k)];
+            for (int k = rows_.offsets[std::size_t(row)]; k < rows_.offsets[std::size_t(row) + 1]; ++k) {
+                const std::size_t j = std::size_t(rows_.columns[std::size_t(k)]);
+                const double x = rows_.weights[std::size_t(k)];
                 p_[j] += at.wP[i] * x;
                 ds_[j] += at.wDs[i] * x;
                 dt_[j] += at.wDt[i] * x;
@@ -96,30 +97,29 @@ private:
         }
     }
 
-    int child(int node, int which);
-    void classify(int node, int depth);
+    // Child `which` of `node`, made and classified at `depth` when first asked.
+    int child(int node, int which, int depth);
+    // Made a leaf (its points' rows) or given its vertices' rows: from its parent's rows through
+    // `step`, or (the root) from its own.
+    void classify(int node, int depth, const LocalRows* parentRows, const LocalStep* step);
     void gatherColumns(Node& leaf, int points);  // the columns of the leaf's rows, once
 
-    Options options_;
+    LocalShapes* shapes_ = nullptr;
     LimitSurfaceOptions surfaceOptions_;
-    Sharpen sharpen_ = Sharpen::None;
-    int rings_ = 0;
-    bool linear_ = false;
     FaceParameterization param_;
     bool regular_ = false;
     int numColumns_ = 0;
     std::vector<Node> nodes_;
     std::vector<int> children_;
-    std::vector<int> rowOffsets_{0}, rowColumns_;
-    std::vector<double> rowWeights_;
+    LocalRows rows_;  // the leaves' points
     std::vector<int> leafColumns_;
     std::vector<int> rowSlots_;  // per row entry of a leaf: rowSlot
     std::vector<int> slot_;      // per column, while gathering
     std::vector<unsigned char> marked_;  // per column, while gathering
-    WalkScratch scratch_;
     std::vector<double> p_, ds_, dt_;  // per column
     RowAccumulator sum_;
-    std::vector<int> points_, limitNodes_;
+    LocalRows next_;            // at the maximum depth: rows of the next level's vertices the limit masks read
+    std::vector<int> nextRow_;  // per vertex of that level: its row in next_, or -1
 };
 
 // The trees of a topology's faces, one per neighbourhood shape: faces whose cuts have the same
@@ -154,13 +154,12 @@ private:
     LimitSurfaceOptions surfaceOptions_;
     Sharpen sharpen_;
     FaceParameterization quadDomain_, triangleDomain_;  // the scheme's, looked up once
-    int rings_;
     bool linear_;
-    std::unordered_map<std::string, std::unique_ptr<FaceTree>> trees_;
+    LocalShapes shapes_;
+    std::unordered_map<const LocalShape*, std::unique_ptr<FaceTree>> trees_;  // by the face's cut
     std::unique_ptr<FaceTree> regular_[4];  // by Leaf - 1: BSpline, BoxSpline, Bilinear, Linear
     std::unique_ptr<RegularPatches> patches_;  // after keepRings
     WalkScratch& scratch_;
-    std::string key_;
     std::vector<Kept> kept_;  // per face, filled by keptTreeOf
     // The kept columns, in blocks that never move (a block's worth of faces per allocation).
     std::vector<std::unique_ptr<int[]>> keptBlocks_;

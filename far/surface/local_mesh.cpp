@@ -11,6 +11,9 @@
 #include "far/schemes/crease.h"
 #include "far/topology/refine_topology.h"
 #include "far/topology/topology_builder.h"
+#include "far/limit/limit_mask.h"
+#include "far/limit/limit_ring.h"
+#include "far/limit/limit_table.h"
 
 namespace quadtri {
 inline namespace v0 {
@@ -41,56 +44,132 @@ void applySharpen(Topology& t, Sharpen sharpen) {
     if (sharpen == Sharpen::All) std::fill(t.edgeSharpness.begin(), t.edgeSharpness.end(), kInfiniteSharpness);
 }
 
-// The cut as a topology of its own with the level's own edges (a face list would join the two
-// children of a collapsed edge, which link the same two vertices), sharpness as cutPatch reads it
-// (boundary edges without theirs, so that the rim's boundaries never come back as creases inside
-// a later cut), then the boundary rules of a base mesh.
-Topology cutKeepingEdges(const Topology& t, const PatchCut& cut, const Options& options, WalkScratch& scratch) {
-    Topology m;
-    m.numVertices = int(cut.source.size());
-    m.faceVerts = cut.corners;
+// What a cut's topology is built from: the cut's faces with the level's own edges (a face list
+// would join the two children of a collapsed edge, which link the same two vertices), sharpness
+// as cutPatch reads it (boundary edges without theirs, so that the rim's boundaries never come
+// back as creases inside a later cut). Two cuts with equal raw arrays have one shape.
+struct RawCut {
+    int face = -1;
+    int numVertices = 0;
+    std::vector<int> sizes, corners, faceEdges, edgeVerts;
+    std::vector<float> edgeSharpness, vertSharpness;
+    std::vector<unsigned char> holes;
+};
+
+void rawCutOf(const Topology& t, const PatchCut& cut, int face, WalkScratch& scratch, RawCut& raw) {
+    raw.face = positionOf(cut.faceSource, face);
+    raw.numVertices = int(cut.source.size());
+    raw.sizes = cut.sizes;
+    raw.corners = cut.corners;
+    raw.faceEdges.clear();
+    raw.edgeVerts.clear();
+    raw.edgeSharpness.clear();
+    raw.holes.clear();
     StampedMarks& localEdge = scratch.labels;  // level edge -> cut edge; cutPatch is done with it
     localEdge.clear(t.numEdges());
-    std::vector<float> edgeSharpness;
     auto edgeOf = [&](int e, int from, int to) {
         if (localEdge.marked(e)) return localEdge.value(e);
-        const int id = m.numEdges();
+        const int id = int(raw.edgeSharpness.size());
         localEdge.mark(e, id);
-        m.edgeVerts.insert(m.edgeVerts.end(), {from, to});
+        raw.edgeVerts.insert(raw.edgeVerts.end(), {from, to});
         const bool crease = isSharp(t.edgeSharpness[std::size_t(e)]) && !(t.edgeFlags[std::size_t(e)] & kEdgeBoundary);
-        edgeSharpness.push_back(crease ? t.edgeSharpness[std::size_t(e)] : 0.0f);
+        raw.edgeSharpness.push_back(crease ? t.edgeSharpness[std::size_t(e)] : 0.0f);
         return id;
     };
     int corner = 0;
     for (std::size_t i = 0; i < cut.faceSource.size(); ++i) {
         const int f = cut.faceSource[i], n = t.faceSize(f), first = corner;
-        m.faceOffsets.push_back(first + n);
         const IndexSpan verts = t.verticesOfFace(f), edges = t.edgesOfFace(f);
         for (int k = 0; k < n; ++k, ++corner) {
             const int e = edges[k], here = cut.corners[std::size_t(first + k)],
                       next = cut.corners[std::size_t(first + (k + 1) % n)];
             const bool forward = t.edgeVerts[2 * std::size_t(e)] == verts[k];
-            m.faceEdges.push_back(edgeOf(e, forward ? here : next, forward ? next : here));
+            raw.faceEdges.push_back(edgeOf(e, forward ? here : next, forward ? next : here));
         }
+        raw.holes.push_back(t.faceHole[std::size_t(f)]);
     }
+    raw.vertSharpness.resize(cut.source.size());
+    for (std::size_t v = 0; v < cut.source.size(); ++v) {
+        const float s = t.vertSharpness[std::size_t(cut.source[v])];
+        raw.vertSharpness[v] = isSharp(s) ? s : 0.0f;
+    }
+}
+
+template <class T>
+void append(std::string& key, const std::vector<T>& items) {
+    const std::size_t n = items.size();
+    key.append(reinterpret_cast<const char*>(&n), sizeof n);
+    key.append(reinterpret_cast<const char*>(items.data()), n * sizeof(T));
+}
+
+void keyOf(const RawCut& raw, std::string& key) {
+    key.assign(reinterpret_cast<const char*>(&raw.face), sizeof raw.face);
+    append(key, raw.sizes);
+    append(key, raw.corners);
+    append(key, raw.faceEdges);
+    append(key, raw.edgeVerts);
+    append(key, raw.edgeSharpness);
+    append(key, raw.vertSharpness);
+    append(key, raw.holes);
+}
+
+// The raw cut as a topology of its own, with the boundary rules of a base mesh.
+Topology topologyOf(const RawCut& raw, const Options& options, Sharpen sharpen) {
+    Topology m;
+    m.numVertices = raw.numVertices;
+    m.faceVerts = raw.corners;
+    int corners = 0;
+    for (int n : raw.sizes) m.faceOffsets.push_back(corners += n);
+    m.faceEdges = raw.faceEdges;
+    m.edgeVerts = raw.edgeVerts;
     completeTopologyFromEdges(m);
-    m.edgeSharpness = edgeSharpness;
-    for (int v = 0; v < m.numVertices; ++v) {
-        const float s = t.vertSharpness[std::size_t(cut.source[std::size_t(v)])];
-        m.vertSharpness[std::size_t(v)] = isSharp(s) ? s : 0.0f;
-    }
-    for (std::size_t i = 0; i < cut.faceSource.size(); ++i) m.faceHole[i] = t.faceHole[std::size_t(cut.faceSource[i])];
-    applyBoundaryRules(m, options);
+    m.edgeSharpness = raw.edgeSharpness;
+    std::copy(raw.vertSharpness.begin(), raw.vertSharpness.end(), m.vertSharpness.begin());
+    std::copy(raw.holes.begin(), raw.holes.end(), m.faceHole.begin());
+    applyBoundaryRules(m, cutOptions(options));
+    applySharpen(m, sharpen);
     return m;
 }
 
-LocalMesh meshOfCut(const Topology& level, const PatchCut& cut, int face, const Options& options, Sharpen sharpen,
-                    WalkScratch& scratch) {
-    LocalMesh m;
-    m.topology = cutKeepingEdges(level, cut, cutOptions(options), scratch);
-    applySharpen(m.topology, sharpen);
-    m.face = positionOf(cut.faceSource, face);
-    return m;
+// A level refined from a local topology and the child's neighbourhood cut from it.
+struct RefinedCut {
+    ChildNumbering num;
+    Topology level;
+    int childFace = -1;
+    PatchCut cut;
+};
+
+void refineAndCut(const Topology& p, int face, int child, int rings, const Options& options, WalkScratch& scratch,
+                  RefinedCut& r) {
+    r.num = numberChildren(p, rulesOf(options.scheme).triangleSplit());
+    r.level = refineTopology(p, r.num, options.creaseMethod, TopologyDetail::Full);
+    r.childFace = child;
+    for (int f = 0; f < face; ++f) r.childFace += r.num.splitsInFour(p.faceSize(f)) ? 4 : p.faceSize(f);
+    cutPatch(r.level, r.level.verticesOfFace(r.childFace), rings, scratch, r.cut);
+}
+
+// Each kept child vertex's stencil over p's vertices, in the table's order; the nodes towards
+// child 0 of a quad or a triangle split in four.
+void fillStep(const Topology& p, int face, const RefinedCut& r, const Options& options, LocalStep& step) {
+    std::vector<std::uint8_t> wanted(std::size_t(r.level.numVertices), 0);
+    for (int v : r.cut.source) wanted[std::size_t(v)] = 1;
+    const StencilTableD table = buildLevelStencils<StencilTableD>(p, r.num, options, nullptr, &wanted);
+    for (int v : r.cut.source) {
+        const int first = table.offsets[std::size_t(v)], size = table.sizes[std::size_t(v)];
+        step.indices.insert(step.indices.end(), table.indices.begin() + first, table.indices.begin() + first + size);
+        step.weights.insert(step.weights.end(), table.weights.begin() + first, table.weights.begin() + first + size);
+        step.offsets.push_back(int(step.indices.size()));
+    }
+    const IndexSpan corners = p.verticesOfFace(face), edges = p.edgesOfFace(face);
+    if (corners.size() != 4 && !(corners.size() == 3 && r.num.splitsInFour(3))) return;
+    auto local = [&](int childVertex) { return positionOf(r.cut.source, childVertex); };
+    auto vertexPoint = [&](int i) { return local(r.num.vertexPoint(corners[i])); };
+    auto edgePoint = [&](int i) { return local(r.num.edgePoint(edges[i])); };
+    if (corners.size() == 4)
+        step.nodes = {vertexPoint(0), edgePoint(0), vertexPoint(1), edgePoint(3), local(r.num.facePoint[face]),
+                      edgePoint(1),   vertexPoint(3), edgePoint(2), vertexPoint(2)};
+    else
+        step.nodes = {vertexPoint(0), vertexPoint(1), vertexPoint(2), edgePoint(0), edgePoint(1), edgePoint(2)};
 }
 
 }  // namespace
@@ -112,65 +191,152 @@ void RowAccumulator::add(double weight, const SparseRow& row) {
     }
 }
 
+void composeRow(const int* indices, const double* weights, int count, const LocalRows& rows, RowAccumulator& sum,
+                LocalRows& out) {
+    for (int k = 0; k < count; ++k) sum.add(weights[k], rows.row(indices[k]));
+    sum.take([&](int column, double weight) {
+        out.columns.push_back(column);
+        out.weights.push_back(weight);
+    });
+    out.offsets.push_back(int(out.columns.size()));
+}
+
+namespace {
+
+void identityRows(int n, LocalRows& rows) {
+    rows.offsets.resize(std::size_t(n) + 1);
+    rows.columns.resize(std::size_t(n));
+    rows.weights.assign(std::size_t(n), 1.0);
+    for (int v = 0; v < n; ++v) {
+        rows.offsets[std::size_t(v) + 1] = v + 1;
+        rows.columns[std::size_t(v)] = v;
+    }
+}
+
+}  // namespace
+
 LocalMesh cutBase(const Topology& base, int face, int rings, const Options& options, WalkScratch& scratch,
                   std::vector<int>& columns, Sharpen sharpen) {
     PatchCut cut;
     cutPatch(base, base.verticesOfFace(face), rings, scratch, cut);
-    LocalMesh m = meshOfCut(base, cut, face, options, sharpen, scratch);
-    const int n = int(cut.source.size());
+    RawCut raw;
+    rawCutOf(base, cut, face, scratch, raw);
+    LocalMesh m;
+    m.topology = topologyOf(raw, options, sharpen);
+    m.face = raw.face;
     columns = cut.source;
-    m.numColumns = n;
-    m.rowOffsets.resize(std::size_t(n) + 1);
-    m.rowColumns.resize(std::size_t(n));
-    m.rowWeights.assign(std::size_t(n), 1.0);
-    for (int v = 0; v < n; ++v) {
-        m.rowOffsets[std::size_t(v) + 1] = v + 1;
-        m.rowColumns[std::size_t(v)] = v;
-    }
+    m.numColumns = int(cut.source.size());
+    identityRows(m.numColumns, m.rows);
     return m;
 }
 
 LocalMesh refineTowards(const LocalMesh& mesh, int child, int rings, const Options& options, WalkScratch& scratch,
                         std::vector<int>* nodes, Sharpen sharpen) {
-    const Topology& p = mesh.topology;
-    const ChildNumbering num = numberChildren(p, rulesOf(options.scheme).triangleSplit());
-    const Topology c = refineTopology(p, num, options.creaseMethod, TopologyDetail::Full);
-    int childFace = child;
-    for (int f = 0; f < mesh.face; ++f) childFace += num.splitsInFour(p.faceSize(f)) ? 4 : p.faceSize(f);
-
-    PatchCut cut;
-    cutPatch(c, c.verticesOfFace(childFace), rings, scratch, cut);
-    LocalMesh out = meshOfCut(c, cut, childFace, options, sharpen, scratch);
-
-    std::vector<std::uint8_t> wanted(std::size_t(c.numVertices), 0);
-    for (int v : cut.source) wanted[v] = 1;
-    const StencilTableD table = buildLevelStencils<StencilTableD>(p, num, options, nullptr, &wanted);
+    RefinedCut r;
+    refineAndCut(mesh.topology, mesh.face, child, rings, options, scratch, r);
+    RawCut raw;
+    rawCutOf(r.level, r.cut, r.childFace, scratch, raw);
+    LocalMesh out;
+    out.topology = topologyOf(raw, options, sharpen);
+    out.face = raw.face;
     out.numColumns = mesh.numColumns;
+    LocalStep step;
+    fillStep(mesh.topology, mesh.face, r, options, step);
     RowAccumulator sum(mesh.numColumns);
-    for (std::size_t i = 0; i < cut.source.size(); ++i) {
-        const int v = cut.source[i], first = table.offsets[v];
-        for (int k = first; k < first + table.sizes[v]; ++k) sum.add(table.weights[k], mesh.row(table.indices[k]));
-        sum.take([&](int column, double weight) {
-            out.rowColumns.push_back(column);
-            out.rowWeights.push_back(weight);
-        });
-        out.rowOffsets.push_back(int(out.rowColumns.size()));
+    for (int v = 0; v < int(r.cut.source.size()); ++v) {
+        const int first = step.offsets[std::size_t(v)];
+        composeRow(step.indices.data() + first, step.weights.data() + first, step.offsets[std::size_t(v) + 1] - first,
+                   mesh.rows, sum, out.rows);
     }
-
     if (nodes) {
-        const IndexSpan corners = p.verticesOfFace(mesh.face), edges = p.edgesOfFace(mesh.face);
-        auto local = [&](int childVertex) { return positionOf(cut.source, childVertex); };
-        auto vertexPoint = [&](int i) { return local(num.vertexPoint(corners[i])); };
-        auto edgePoint = [&](int i) { return local(num.edgePoint(edges[i])); };
-        if (corners.size() == 4)
-            *nodes = {vertexPoint(0), edgePoint(0), vertexPoint(1), edgePoint(3), local(num.facePoint[mesh.face]),
-                      edgePoint(1),   vertexPoint(3), edgePoint(2), vertexPoint(2)};
-        else if (corners.size() == 3 && num.splitsInFour(3))
-            *nodes = {vertexPoint(0), vertexPoint(1), vertexPoint(2), edgePoint(0), edgePoint(1), edgePoint(2)};
-        else
+        if (step.nodes.empty())
             throw std::logic_error("local mesh: nodes of a face that is neither a quad nor a triangle split in four");
+        *nodes = step.nodes;
     }
     return out;
+}
+
+struct LocalShapes::Work {
+    RawCut raw;
+    PatchCut cut;
+    RefinedCut refined;
+};
+
+LocalShapes::LocalShapes(const Options& options, int rings, Sharpen sharpen)
+    : options_(options), rings_(rings), sharpen_(sharpen),
+      linear_(sharpen == Sharpen::All && rulesOf(options.scheme).surfacePatches().sharpIsLinear),
+      work_(std::make_unique<Work>()) {}
+
+LocalShapes::~LocalShapes() = default;
+
+LocalShape& LocalShapes::intern(const Topology& level, const PatchCut& cut, int face, WalkScratch& scratch) {
+    rawCutOf(level, cut, face, scratch, work_->raw);
+    keyOf(work_->raw, key_);
+    std::unique_ptr<LocalShape>& shape = shapes_[key_];
+    if (!shape) {
+        shape = std::make_unique<LocalShape>();
+        shape->topology = topologyOf(work_->raw, options_, sharpen_);
+        shape->face = work_->raw.face;
+    }
+    return *shape;
+}
+
+LocalShape& LocalShapes::cut(const Topology& base, int face, WalkScratch& baseScratch, std::vector<int>& columns) {
+    cutPatch(base, base.verticesOfFace(face), rings_, baseScratch, work_->cut);
+    LocalShape& shape = intern(base, work_->cut, face, baseScratch);
+    columns = work_->cut.source;
+    return shape;
+}
+
+const LocalStep& LocalShapes::step(LocalShape& shape, int child) {
+    if (std::size_t(child) >= shape.steps.size()) shape.steps.resize(std::size_t(child) + 1);
+    std::unique_ptr<LocalStep>& step = shape.steps[std::size_t(child)];
+    if (step) return *step;
+    refineAndCut(shape.topology, shape.face, child, rings_, options_, scratch_, work_->refined);
+    auto made = std::make_unique<LocalStep>();
+    made->child = &intern(work_->refined.level, work_->refined.cut, work_->refined.childFace, scratch_);
+    fillStep(shape.topology, shape.face, work_->refined, options_, *made);
+    step = std::move(made);
+    return *step;
+}
+
+const LocalShape& LocalShapes::classify(LocalShape& shape) {
+    if (shape.classified) return shape;
+    shape.classified = true;
+    if (linear_) {
+        // Under Sharpen::All a face is its corners' bilinear (linear) patch.
+        const IndexSpan corners = shape.topology.verticesOfFace(shape.face);
+        shape.points.assign(corners.begin(), corners.end());
+        shape.patch = corners.size() == 4 ? PatchKind::Bilinear : PatchKind::Linear;
+    } else {
+        shape.patch = regularPatch(shape.topology, shape.face, options_, shape.points);
+    }
+    return shape;
+}
+
+const LocalRows& LocalShapes::limitMasks(LocalShape& shape) {
+    if (shape.limitMasks) return *shape.limitMasks;
+    const LocalStep& next = step(shape, 0);
+    if (next.nodes.empty())
+        throw std::logic_error("local mesh: nodes of a face that is neither a quad nor a triangle split in four");
+    const Topology& t = next.child->topology;
+    const SchemeRules& rules = rulesOf(options_.scheme);
+    auto masks = std::make_unique<LocalRows>();
+    VertexRing ring;
+    LimitMask limit;
+    LimitMaskCache cache;
+    for (int vertex : next.nodes) {
+        orderVertexRing(t, vertex, -1, ring);
+        limit.clear();
+        rules.limitMask(LimitVertex{t, options_, ring, limitRule(t, ring)}, cache, limit);
+        for (int k = 0; k < limit.size(); ++k) {
+            masks->columns.push_back(limit.indices[std::size_t(k)]);
+            masks->weights.push_back(limit.position[std::size_t(k)]);
+        }
+        masks->offsets.push_back(int(masks->columns.size()));
+    }
+    shape.limitMasks = std::move(masks);
+    return *shape.limitMasks;
 }
 
 }  // namespace internal
