@@ -39,6 +39,7 @@ inline int allowedThreads() {
 // body(i) for every i in [begin, end), one task each (a few large parts).
 template <typename Body>
 void forEachPart(int begin, int end, const Body& body) {
+    if (end - begin == 1) return body(begin);  // one part: no task (local refinement builds many tiny tables)
     tbb::parallel_for(begin, end, body);
 }
 

@@ -21,7 +21,7 @@ protected:
 class BilinearRules : public SchemeRules {
 public:
     SurfacePatches surfacePatches() const override { return {true, false, false, false}; }
-    int surfaceRings() const override { return 2; }
+    int surfaceRings() const override { return 1; }
     const char* name() const override { return "bilinear"; }
     const char* description() const override {
         return "linear subdivision only: corners stay, edge midpoints, face centroids";

@@ -323,6 +323,8 @@ class CatmarkButterflyRules : public SchemeRules {
 public:
     // Butterfly interpolates: its triangles are no polynomial patch.
     SurfacePatches surfacePatches() const override { return {false, true, false, true, false}; }
+    int surfaceRings() const override { return 3; }
+    int surfaceLimitRings() const override { return 7; }
     const char* name() const override { return "catmark-butterfly"; }
     const char* description() const override {
         return "Catmull-Clark on quads, interpolating Butterfly on triangles";

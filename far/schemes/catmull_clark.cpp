@@ -54,7 +54,7 @@ private:
 class CatmullClarkRules : public SchemeRules {
 public:
     SurfacePatches surfacePatches() const override { return {false, true, false, false}; }
-    int surfaceRings() const override { return 2; }
+    int surfaceRings() const override { return 1; }
     const char* name() const override { return "catmull-clark"; }
     const char* description() const override {
         return "OpenSubdiv's Catmark exactly: every face, triangles too, split into quads";

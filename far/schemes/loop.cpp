@@ -48,7 +48,7 @@ protected:
 class LoopRules : public SchemeRules {
 public:
     SurfacePatches surfacePatches() const override { return {false, false, true, false}; }
-    int surfaceRings() const override { return 2; }
+    int surfaceRings() const override { return 1; }
     const char* name() const override { return "loop"; }
     const char* description() const override { return "OpenSubdiv's Loop exactly: triangles only"; }
     bool acceptsNonTriangles() const override { return false; }

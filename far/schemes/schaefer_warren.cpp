@@ -156,6 +156,8 @@ namespace {
 class SchaeferWarrenRules : public SchemeRules {
 public:
     SurfacePatches surfacePatches() const override { return {false, true, true, true}; }
+    int surfaceRings() const override { return 3; }
+    int surfaceLimitRings() const override { return 7; }
     const char* name() const override { return "schaefer-warren"; }
     const char* description() const override {
         return "Stam-Loop plus unzipping of the tri/quad network: C2 across the ordinary seam";

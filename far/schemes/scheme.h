@@ -127,12 +127,15 @@ public:
     // may hold its faces only (TopologyDetail::FacesOnly): estimate from the faces then.
     virtual std::size_t extraLevelBytes(const Topology& /*parent*/) const { return 0; }
 
-    // What far/surface/ may evaluate in closed form, and how many face rings around a followed
-    // sub-face keep its children's masks and limit masks off the local mesh's rim: 2 where every
-    // mask reads one ring of the parent, more where masks read two (Butterfly's wings,
-    // Schaefer-Warren's copies) or limit masks are found by refining further (limit_deeper.h).
+    // What far/surface/ may evaluate in closed form; how many face rings around a followed
+    // sub-face keep its children's neighbourhoods off the local mesh's rim (1 where every mask
+    // reads one ring of the parent: a child's one-ring reads no further than its parent's; 3
+    // where masks read two, Butterfly's wings and Schaefer-Warren's copies); and how many around
+    // a sub-face's next level keep its corners' limit masks off the rim (more where limit masks
+    // are found by refining further, limit_deeper.h).
     virtual SurfacePatches surfacePatches() const { return {}; }
     virtual int surfaceRings() const { return 7; }
+    virtual int surfaceLimitRings() const { return surfaceRings(); }
 
     // Appends to `out` (empty) the limit masks of one vertex of a level with full topology:
     // position, dU and dV (docs/limit.md). The default is the generic eigen-analysis of the

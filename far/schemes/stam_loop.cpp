@@ -69,6 +69,8 @@ namespace {
 class StamLoopRules : public SchemeRules {
 public:
     SurfacePatches surfacePatches() const override { return {false, true, true, true}; }
+    int surfaceRings() const override { return 2; }
+    int surfaceLimitRings() const override { return 7; }
     const char* name() const override { return "stam-loop"; }
     const char* description() const override {
         return "Catmull-Clark on quads, Loop on triangles, corrected mixed vertices (Stam-Loop)";

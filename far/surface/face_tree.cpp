@@ -166,6 +166,10 @@ void FaceTree::classify(int id, int depth, const LocalRows* parentRows, const Lo
     }
     if (step) {
         node.rows = std::make_unique<LocalRows>();
+        // About the parent's entries: grown by doubling, the rows would be copied over and over.
+        node.rows->offsets.reserve(std::size_t(shape.topology.numVertices) + 1);
+        node.rows->columns.reserve(parentRows->columns.size() + parentRows->columns.size() / 2);
+        node.rows->weights.reserve(node.rows->columns.capacity());
         for (int v = 0; v < shape.topology.numVertices; ++v) rowOf(v, *node.rows);
     }
     if (depth < surfaceOptions_.maxDepth) {
@@ -177,7 +181,7 @@ void FaceTree::classify(int id, int depth, const LocalRows* parentRows, const Lo
     // The quadratic through the exact limit points of the sub-face's next level: the rows of the
     // next level's vertices the masks read, then the masks' sums of them.
     const LocalRows& masks = shapes_->limitMasks(shape);
-    const LocalStep& next = shapes_->step(shape, 0);
+    const LocalStep& next = shapes_->limitStep(shape);
     nextRow_.assign(std::size_t(next.child->topology.numVertices), -1);
     next_ = LocalRows();
     for (int v : masks.columns) {
@@ -283,7 +287,8 @@ FaceTrees::FaceTrees(const Topology& base, const Options& options, const LimitSu
       quadDomain_(FaceParameterization::of(options.scheme, 4)),
       triangleDomain_(FaceParameterization::of(options.scheme, 3)),
       linear_(sharpen == Sharpen::All && rulesOf(options.scheme).surfacePatches().sharpIsLinear),
-      shapes_(options, surfaceOptions.rings > 0 ? surfaceOptions.rings : rulesOf(options.scheme).surfaceRings(), sharpen),
+      shapes_(options, surfaceOptions.rings > 0 ? surfaceOptions.rings : rulesOf(options.scheme).surfaceRings(),
+              surfaceOptions.rings > 0 ? surfaceOptions.rings : rulesOf(options.scheme).surfaceLimitRings(), sharpen),
       scratch_(baseScratch) {}
 
 FaceTrees::~FaceTrees() = default;

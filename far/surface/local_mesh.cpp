@@ -139,13 +139,21 @@ struct RefinedCut {
     PatchCut cut;
 };
 
+// The cut is `rings` rings around the child face, or with `wholeFace` around all the face's
+// children (whose vertices' limit masks read their own rings: limitMasks).
 void refineAndCut(const Topology& p, int face, int child, int rings, const Options& options, WalkScratch& scratch,
-                  RefinedCut& r) {
+                  RefinedCut& r, bool wholeFace = false) {
     r.num = numberChildren(p, rulesOf(options.scheme).triangleSplit());
     r.level = refineTopology(p, r.num, options.creaseMethod, TopologyDetail::Full);
     r.childFace = child;
     for (int f = 0; f < face; ++f) r.childFace += r.num.splitsInFour(p.faceSize(f)) ? 4 : p.faceSize(f);
-    cutPatch(r.level, r.level.verticesOfFace(r.childFace), rings, scratch, r.cut);
+    if (!wholeFace) return cutPatch(r.level, r.level.verticesOfFace(r.childFace), rings, scratch, r.cut);
+    std::vector<int> seeds;
+    const int children = r.num.splitsInFour(p.faceSize(face)) ? 4 : p.faceSize(face);
+    for (int c = r.childFace - child; c < r.childFace - child + children; ++c)
+        for (int v : r.level.verticesOfFace(c))
+            if (std::find(seeds.begin(), seeds.end(), v) == seeds.end()) seeds.push_back(v);
+    cutPatch(r.level, IndexSpan(seeds.data(), seeds.data() + seeds.size()), rings, scratch, r.cut);
 }
 
 // Each kept child vertex's stencil over p's vertices, in the table's order; the nodes towards
@@ -262,8 +270,8 @@ struct LocalShapes::Work {
     RefinedCut refined;
 };
 
-LocalShapes::LocalShapes(const Options& options, int rings, Sharpen sharpen)
-    : options_(options), rings_(rings), sharpen_(sharpen),
+LocalShapes::LocalShapes(const Options& options, int rings, int limitRings, Sharpen sharpen)
+    : options_(options), rings_(rings), limitRings_(limitRings), sharpen_(sharpen),
       linear_(sharpen == Sharpen::All && rulesOf(options.scheme).surfacePatches().sharpIsLinear),
       work_(std::make_unique<Work>()) {}
 
@@ -314,9 +322,19 @@ const LocalShape& LocalShapes::classify(LocalShape& shape) {
     return shape;
 }
 
+const LocalStep& LocalShapes::limitStep(LocalShape& shape) {
+    if (shape.limitStep) return *shape.limitStep;
+    refineAndCut(shape.topology, shape.face, 0, limitRings_, options_, scratch_, work_->refined, true);
+    auto made = std::make_unique<LocalStep>();
+    made->child = &intern(work_->refined.level, work_->refined.cut, work_->refined.childFace, scratch_);
+    fillStep(shape.topology, shape.face, work_->refined, options_, *made);
+    shape.limitStep = std::move(made);
+    return *shape.limitStep;
+}
+
 const LocalRows& LocalShapes::limitMasks(LocalShape& shape) {
     if (shape.limitMasks) return *shape.limitMasks;
-    const LocalStep& next = step(shape, 0);
+    const LocalStep& next = limitStep(shape);
     if (next.nodes.empty())
         throw std::logic_error("local mesh: nodes of a face that is neither a quad nor a triangle split in four");
     const Topology& t = next.child->topology;

@@ -105,7 +105,7 @@ struct LocalStep {
     LocalShape* child = nullptr;
     std::vector<int> offsets{0}, indices;
     std::vector<double> weights;
-    std::vector<int> nodes;  // refineTowards's nodes: made towards child 0 of a quad or a triangle split in four
+    std::vector<int> nodes;  // refineTowards's nodes, where the face is a quad or a triangle split in four
 };
 
 // A neighbourhood's shape: the topology a local mesh keeps, without its rows. Local meshes of one
@@ -118,14 +118,18 @@ struct LocalShape {
     PatchKind patch = PatchKind::None;  // the face's regular patch, if it is one
     std::vector<int> points;            // its points, in the basis's order
     std::vector<std::unique_ptr<LocalStep>> steps;  // per child of the face, made when first asked
-    // Towards child 0: each of the nodes' exact limit masks over the child's vertices.
+    // One level down around all of the face's children (the nodes' rings in full), and each
+    // node's exact limit mask over that level's vertices.
+    std::unique_ptr<LocalStep> limitStep;
     std::unique_ptr<LocalRows> limitMasks;
 };
 
 // The shapes met by one factory's trees, each kept once. One thread at a time.
 class LocalShapes {
 public:
-    LocalShapes(const Options& options, int rings, Sharpen sharpen);
+    // Steps keep `rings` rings around the followed child, limit steps `limitRings` around the
+    // face's children.
+    LocalShapes(const Options& options, int rings, int limitRings, Sharpen sharpen);
     ~LocalShapes();
 
     // Base face's cut (cutBase's), and into `columns` the base vertex of each of its vertices;
@@ -134,7 +138,8 @@ public:
     // The shape's step towards `child`, and its patch.
     const LocalStep& step(LocalShape& shape, int child);
     const LocalShape& classify(LocalShape& shape);
-    // The limit masks of step(shape, 0)'s nodes, over the child's vertices.
+    // The face's next level, cut around all its children: its nodes and their limit masks.
+    const LocalStep& limitStep(LocalShape& shape);
     const LocalRows& limitMasks(LocalShape& shape);
     int size() const { return int(shapes_.size()); }
 
@@ -142,7 +147,7 @@ private:
     LocalShape& intern(const Topology& level, const PatchCut& cut, int face, WalkScratch& scratch);
 
     Options options_;
-    int rings_;
+    int rings_, limitRings_;
     Sharpen sharpen_;
     bool linear_;
     WalkScratch scratch_;  // for cuts of local levels

@@ -7,9 +7,11 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <random>
 
 #include <quadtri/far/limit_surface.h>
+#include "far/schemes/scheme.h"
 #include "far/surface/local_mesh.h"
 #include "far/surface/patch_basis.h"
 #include "far/surface/regular_patch.h"
@@ -173,6 +175,55 @@ TEST(LocalRefinement, KeepsTheMeshsOwnVerticesAroundTheFollowedFace) {
         for (Scheme scheme : schemesTakingQuads())
             for (const std::vector<int>& path : {std::vector<int>{2, 0, 0}, {1, 3, 2}})
                 EXPECT_LT(worstLocalVertex(mesh, scheme, 9, path), 1e-6) << mesh << " " << toString(scheme);
+}
+
+// Each cut keeps the scheme's own rings (1 around the followed child where masks read one ring,
+// 3 or 2 for the mixed schemes; 7 for their limit masks): the points are bit for bit those of
+// wider cuts (the old 2 and 7 everywhere), at maxDepth 2 (most points reach the limit step) and
+// at the default, on every mesh and scheme, random points and points next to corners.
+TEST(LocalRefinement, WiderCutsChangeNoBit) {
+    std::mt19937 random(11);
+    for (const std::string& mesh : allMeshes())
+        for (Scheme scheme : allSchemes()) {
+            Options options;
+            options.scheme = scheme;
+            RefinedMesh r;
+            try {
+                r = refineMesh(mesh, 0, options);
+            } catch (const TopologyError&) {
+                continue;  // loop on quads
+            }
+            const SchemeRules& rules = rulesOf(scheme);
+            const int wide = std::max(rules.surfaceRings() + 1, rules.surfaceLimitRings());
+            for (int maxDepth : {2, 10}) {
+                LimitSurfaceOptions narrow, wider;
+                narrow.maxDepth = wider.maxDepth = maxDepth;
+                wider.rings = wide;
+                const LimitSurface a(*r.refiner, narrow), b(*r.refiner, wider);
+                const int step = std::max(1, a.numFaces() / (kSanitized ? 2 : 6));
+                LimitPointStencil sa, sb;
+                for (int f = 0; f < a.numFaces(); f += step) {
+                    if (a.isHole(f)) continue;
+                    const FaceParameterization p = a.parameterization(f);
+                    std::vector<std::pair<double, double>> points;
+                    for (int k = 0; k < 2; ++k) points.push_back(randomPointOf(p, k, random));
+                    double u, v;
+                    p.cornerCoord(0, u, v);
+                    const bool sub = p.type == FaceParameterization::Type::QuadSubFaces;  // corner 0's sub-face
+                    const double cu = sub ? std::floor(u) + 0.5 : 0.25, cv = sub ? std::floor(v) + 0.5 : 0.25;
+                    points.emplace_back(u + (cu - u) * 1e-3, v + (cv - v) * 1e-3);  // deep, next to corner 0
+                    for (const auto& [pu, pv] : points) {
+                        a.stencil(f, pu, pv, sa);
+                        b.stencil(f, pu, pv, sb);
+                        std::map<int, std::array<double, 3>> wa, wb;
+                        for (int k = 0; k < sa.size(); ++k) wa[sa.indices[std::size_t(k)]] = {sa.position[std::size_t(k)], sa.du[std::size_t(k)], sa.dv[std::size_t(k)]};
+                        for (int k = 0; k < sb.size(); ++k) wb[sb.indices[std::size_t(k)]] = {sb.position[std::size_t(k)], sb.du[std::size_t(k)], sb.dv[std::size_t(k)]};
+                        ASSERT_TRUE(wa == wb) << mesh << " " << toString(scheme) << " maxDepth " << maxDepth << " face " << f
+                                              << " (" << pu << ", " << pv << ")";
+                    }
+                }
+            }
+        }
 }
 
 // ---- dyadic points against the uniform limit ----------------------------------------------
