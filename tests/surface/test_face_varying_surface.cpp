@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include <quadtri/far/limit_surface.h>
+#include "far/schemes/scheme.h"
 #include "tests/limit/limit_support.h"
 #include "tests/osd_reference.h"
 #include "tests/sanitized.h"
@@ -293,6 +296,49 @@ TEST(FaceVaryingSurface, StencilsArePartitionsOfUnityAndTheTableHoldsThem) {
             }
         }
     }
+}
+
+// The UVs' trees cut as narrowly as the positions' (far/schemes/scheme.h, surfaceRings): every
+// value bit for bit what wider cuts give, under every scheme and linear interpolation, at
+// maxDepth 2 (most points through the limit step) and 10.
+TEST(FaceVaryingSurface, WiderCutsChangeNoBit) {
+    std::mt19937 random(13);
+    for (const std::string mesh : {"uv/mixed_torus_uv.obj", "uv/cylinder_capped_creased_uv.obj", "osd/catmark_pyramid.obj"})
+        for (Scheme scheme : allSchemes())
+            for (FVarLinearInterpolation linear : {FVarLinearInterpolation::None, FVarLinearInterpolation::CornersPlus1,
+                                                   FVarLinearInterpolation::Boundaries}) {
+                Options options;
+                options.scheme = scheme;
+                options.fvarLinearInterpolation = linear;
+                RefinedMesh r;
+                try {
+                    r = refineWithUVs(mesh, 0, options);
+                } catch (const TopologyError&) {
+                    continue;  // loop on quads
+                }
+                const SchemeRules& rules = rulesOf(scheme);
+                for (int maxDepth : {2, 10}) {
+                    LimitSurfaceOptions narrow, wider;
+                    narrow.maxDepth = wider.maxDepth = maxDepth;
+                    wider.rings = std::max(rules.surfaceRings() + 1, rules.surfaceLimitRings());
+                    const LimitSurface a(*r.refiner, narrow), b(*r.refiner, wider);
+                    LimitPointStencil sa, sb;
+                    forSampleFaces(a, kSanitized ? 3 : 8, [&](int f) {
+                        for (int k = 0; k < 2; ++k) {
+                            const auto [u, v] = randomPointOf(a.parameterization(f), k, random);
+                            a.fvarStencil(0, f, u, v, sa);
+                            b.fvarStencil(0, f, u, v, sb);
+                            std::map<int, std::array<double, 3>> wa, wb;
+                            for (int i = 0; i < sa.size(); ++i)
+                                wa[sa.indices[std::size_t(i)]] = {sa.position[std::size_t(i)], sa.du[std::size_t(i)], sa.dv[std::size_t(i)]};
+                            for (int i = 0; i < sb.size(); ++i)
+                                wb[sb.indices[std::size_t(i)]] = {sb.position[std::size_t(i)], sb.du[std::size_t(i)], sb.dv[std::size_t(i)]};
+                            ASSERT_TRUE(wa == wb) << mesh << " " << toString(scheme) << " maxDepth " << maxDepth << " face " << f
+                                                  << " (" << u << ", " << v << ")";
+                        }
+                    });
+                }
+            }
 }
 
 TEST(FaceVaryingSurface, RefusesAMissingChannelAndPointsOutsideTheFace) {
