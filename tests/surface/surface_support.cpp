@@ -1,9 +1,12 @@
 #include "tests/surface/surface_support.h"
 
+#include <algorithm>
 #include <array>
+#include <map>
 #include <vector>
 
 #include <quadtri/far/limit_surface.h>
+#include "far/schemes/scheme.h"
 
 namespace quadtri::test {
 
@@ -73,6 +76,39 @@ std::pair<double, double> randomPointOf(const FaceParameterization& p, int k, st
         v = i / p.gridWidth + 0.5 * v;
     }
     return {u, v};
+}
+
+void forEachMeshAndScheme(int levels, const std::function<void(const std::string&, Scheme, RefinedMesh&)>& visit) {
+    for (const std::string& mesh : allMeshes())
+        for (Scheme scheme : allSchemes()) {
+            Options options;
+            options.scheme = scheme;
+            RefinedMesh r;
+            try {
+                r = refineMesh(mesh, levels, options);
+            } catch (const TopologyError&) {
+                continue;
+            }
+            visit(mesh, scheme, r);
+        }
+}
+
+std::pair<LimitSurfaceOptions, LimitSurfaceOptions> narrowAndWiderCuts(Scheme scheme, int maxDepth) {
+    const internal::SchemeRules& rules = internal::rulesOf(scheme);
+    LimitSurfaceOptions narrow, wider;
+    narrow.maxDepth = wider.maxDepth = maxDepth;
+    wider.rings = std::max(rules.surfaceRings() + 1, rules.surfaceLimitRings());
+    return {narrow, wider};
+}
+
+bool sameWeights(const LimitPointStencil& a, const LimitPointStencil& b) {
+    auto byIndex = [](const LimitPointStencil& s) {
+        std::map<int, std::array<double, 3>> out;
+        for (int k = 0; k < s.size(); ++k)
+            out[s.indices[std::size_t(k)]] = {s.position[std::size_t(k)], s.du[std::size_t(k)], s.dv[std::size_t(k)]};
+        return out;
+    };
+    return a.size() == b.size() && byIndex(a) == byIndex(b);
 }
 
 }  // namespace quadtri::test

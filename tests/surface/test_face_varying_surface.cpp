@@ -5,13 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <map>
 #include <random>
 
 #include <quadtri/far/limit_surface.h>
-#include "far/schemes/scheme.h"
 #include "tests/limit/limit_support.h"
 #include "tests/osd_reference.h"
 #include "tests/sanitized.h"
@@ -316,11 +313,8 @@ TEST(FaceVaryingSurface, WiderCutsChangeNoBit) {
                 } catch (const TopologyError&) {
                     continue;  // loop on quads
                 }
-                const SchemeRules& rules = rulesOf(scheme);
                 for (int maxDepth : {2, 10}) {
-                    LimitSurfaceOptions narrow, wider;
-                    narrow.maxDepth = wider.maxDepth = maxDepth;
-                    wider.rings = std::max(rules.surfaceRings() + 1, rules.surfaceLimitRings());
+                    const auto [narrow, wider] = narrowAndWiderCuts(scheme, maxDepth);
                     const LimitSurface a(*r.refiner, narrow), b(*r.refiner, wider);
                     LimitPointStencil sa, sb;
                     forSampleFaces(a, kSanitized ? 3 : 8, [&](int f) {
@@ -328,13 +322,8 @@ TEST(FaceVaryingSurface, WiderCutsChangeNoBit) {
                             const auto [u, v] = randomPointOf(a.parameterization(f), k, random);
                             a.fvarStencil(0, f, u, v, sa);
                             b.fvarStencil(0, f, u, v, sb);
-                            std::map<int, std::array<double, 3>> wa, wb;
-                            for (int i = 0; i < sa.size(); ++i)
-                                wa[sa.indices[std::size_t(i)]] = {sa.position[std::size_t(i)], sa.du[std::size_t(i)], sa.dv[std::size_t(i)]};
-                            for (int i = 0; i < sb.size(); ++i)
-                                wb[sb.indices[std::size_t(i)]] = {sb.position[std::size_t(i)], sb.du[std::size_t(i)], sb.dv[std::size_t(i)]};
-                            ASSERT_TRUE(wa == wb) << mesh << " " << toString(scheme) << " maxDepth " << maxDepth << " face " << f
-                                                  << " (" << u << ", " << v << ")";
+                            ASSERT_TRUE(sameWeights(sa, sb)) << mesh << " " << toString(scheme) << " maxDepth "
+                                                             << maxDepth << " face " << f << " (" << u << ", " << v << ")";
                         }
                     });
                 }

@@ -7,11 +7,9 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <random>
 
 #include <quadtri/far/limit_surface.h>
-#include "far/schemes/scheme.h"
 #include "far/surface/local_mesh.h"
 #include "far/surface/patch_basis.h"
 #include "far/surface/regular_patch.h"
@@ -136,38 +134,30 @@ double worstLocalVertex(const std::string& mesh, Scheme scheme, int face, const 
 // in any order of the faces, on every mesh and level 0 and 1 of every scheme.
 TEST(RegularPatches, AreThePatchesFoundFaceByFace) {
     std::mt19937 random(5);
-    for (const std::string& mesh : allMeshes())
-        for (Scheme scheme : allSchemes()) {
-            Options options;
-            options.scheme = scheme;
-            RefinedMesh r;
-            try {
-                r = refineMesh(mesh, 1, options);
-            } catch (const TopologyError&) {
-                continue;  // loop on quads
+    forEachMeshAndScheme(1, [&](const std::string& mesh, Scheme scheme, RefinedMesh& r) {
+        Options o = r.options;
+        o.leftHanded = false;  // every level is counter-clockwise
+        for (int l = 0; l <= 1; ++l) {
+            const Topology& level = r.refiner->level(l);
+            std::vector<int> faces(std::size_t(level.numFaces()));
+            for (int f = 0; f < level.numFaces(); ++f) faces[std::size_t(f)] = f;
+            std::shuffle(faces.begin(), faces.end(), random);
+            RegularPatches shared(level, o);
+            std::vector<int> alone, found;
+            int regular = 0;
+            for (int f : faces) {
+                const PatchKind kind = regularPatch(level, f, o, alone);
+                ASSERT_EQ(shared.of(f, found), kind)
+                    << mesh << " " << toString(scheme) << " level " << l << " face " << f;
+                if (kind == PatchKind::None) continue;
+                ASSERT_EQ(found, alone) << mesh << " level " << l << " face " << f;
+                ++regular;
             }
-            Options o = r.options;
-            o.leftHanded = false;  // every level is counter-clockwise
-            for (int l = 0; l <= 1; ++l) {
-                const Topology& level = r.refiner->level(l);
-                std::vector<int> faces(std::size_t(level.numFaces()));
-                for (int f = 0; f < level.numFaces(); ++f) faces[std::size_t(f)] = f;
-                std::shuffle(faces.begin(), faces.end(), random);
-                RegularPatches shared(level, o);
-                std::vector<int> alone, found;
-                int regular = 0;
-                for (int f : faces) {
-                    const PatchKind kind = regularPatch(level, f, o, alone);
-                    ASSERT_EQ(shared.of(f, found), kind) << mesh << " " << toString(scheme) << " level " << l << " face " << f;
-                    if (kind == PatchKind::None) continue;
-                    ASSERT_EQ(found, alone) << mesh << " level " << l << " face " << f;
-                    ++regular;
-                }
-                if (mesh == "mixed/mixed_torus.obj" && l == 1) {
-                    EXPECT_GT(regular, 0) << toString(scheme);
-                }
+            if (mesh == "mixed/mixed_torus.obj" && l == 1) {
+                EXPECT_GT(regular, 0) << toString(scheme);
             }
         }
+    });
 }
 
 TEST(LocalRefinement, KeepsTheMeshsOwnVerticesAroundTheFollowedFace) {
@@ -183,47 +173,31 @@ TEST(LocalRefinement, KeepsTheMeshsOwnVerticesAroundTheFollowedFace) {
 // at the default, on every mesh and scheme, random points and points next to corners.
 TEST(LocalRefinement, WiderCutsChangeNoBit) {
     std::mt19937 random(11);
-    for (const std::string& mesh : allMeshes())
-        for (Scheme scheme : allSchemes()) {
-            Options options;
-            options.scheme = scheme;
-            RefinedMesh r;
-            try {
-                r = refineMesh(mesh, 0, options);
-            } catch (const TopologyError&) {
-                continue;  // loop on quads
-            }
-            const SchemeRules& rules = rulesOf(scheme);
-            const int wide = std::max(rules.surfaceRings() + 1, rules.surfaceLimitRings());
-            for (int maxDepth : {2, 10}) {
-                LimitSurfaceOptions narrow, wider;
-                narrow.maxDepth = wider.maxDepth = maxDepth;
-                wider.rings = wide;
-                const LimitSurface a(*r.refiner, narrow), b(*r.refiner, wider);
-                const int step = std::max(1, a.numFaces() / (kSanitized ? 2 : 6));
-                LimitPointStencil sa, sb;
-                for (int f = 0; f < a.numFaces(); f += step) {
-                    if (a.isHole(f)) continue;
-                    const FaceParameterization p = a.parameterization(f);
-                    std::vector<std::pair<double, double>> points;
-                    for (int k = 0; k < 2; ++k) points.push_back(randomPointOf(p, k, random));
-                    double u, v;
-                    p.cornerCoord(0, u, v);
-                    const bool sub = p.type == FaceParameterization::Type::QuadSubFaces;  // corner 0's sub-face
-                    const double cu = sub ? std::floor(u) + 0.5 : 0.25, cv = sub ? std::floor(v) + 0.5 : 0.25;
-                    points.emplace_back(u + (cu - u) * 1e-3, v + (cv - v) * 1e-3);  // deep, next to corner 0
-                    for (const auto& [pu, pv] : points) {
-                        a.stencil(f, pu, pv, sa);
-                        b.stencil(f, pu, pv, sb);
-                        std::map<int, std::array<double, 3>> wa, wb;
-                        for (int k = 0; k < sa.size(); ++k) wa[sa.indices[std::size_t(k)]] = {sa.position[std::size_t(k)], sa.du[std::size_t(k)], sa.dv[std::size_t(k)]};
-                        for (int k = 0; k < sb.size(); ++k) wb[sb.indices[std::size_t(k)]] = {sb.position[std::size_t(k)], sb.du[std::size_t(k)], sb.dv[std::size_t(k)]};
-                        ASSERT_TRUE(wa == wb) << mesh << " " << toString(scheme) << " maxDepth " << maxDepth << " face " << f
-                                              << " (" << pu << ", " << pv << ")";
-                    }
+    forEachMeshAndScheme(0, [&](const std::string& mesh, Scheme scheme, RefinedMesh& r) {
+        for (int maxDepth : {2, 10}) {
+            const auto [narrow, wider] = narrowAndWiderCuts(scheme, maxDepth);
+            const LimitSurface a(*r.refiner, narrow), b(*r.refiner, wider);
+            const int step = std::max(1, a.numFaces() / (kSanitized ? 2 : 6));
+            LimitPointStencil sa, sb;
+            for (int f = 0; f < a.numFaces(); f += step) {
+                if (a.isHole(f)) continue;
+                const FaceParameterization p = a.parameterization(f);
+                std::vector<std::pair<double, double>> points;
+                for (int k = 0; k < 2; ++k) points.push_back(randomPointOf(p, k, random));
+                double u, v;
+                p.cornerCoord(0, u, v);
+                const bool sub = p.type == FaceParameterization::Type::QuadSubFaces;  // corner 0's sub-face
+                const double cu = sub ? std::floor(u) + 0.5 : 0.25, cv = sub ? std::floor(v) + 0.5 : 0.25;
+                points.emplace_back(u + (cu - u) * 1e-3, v + (cv - v) * 1e-3);  // deep, next to corner 0
+                for (const auto& [pu, pv] : points) {
+                    a.stencil(f, pu, pv, sa);
+                    b.stencil(f, pu, pv, sb);
+                    ASSERT_TRUE(sameWeights(sa, sb)) << mesh << " " << toString(scheme) << " maxDepth " << maxDepth
+                                                     << " face " << f << " (" << pu << ", " << pv << ")";
                 }
             }
         }
+    });
 }
 
 // ---- dyadic points against the uniform limit ----------------------------------------------
