@@ -62,9 +62,10 @@ struct LimitSurfaceOptions {
     // interpolated from the exact limit points of its sub-face's next level (docs/surface.md,
     // "Error bound"). 10 leaves sub-faces of 1/1024 of the face.
     int maxDepth = 10;
-    // Vertex rings of faces kept around the followed sub-face at each level; 0 picks the
-    // scheme's own (2 where every rule reads one ring, 3 where a rule reads two). Tests raise it
-    // to show the result does not depend on it.
+    // Vertex rings of faces kept around the followed sub-face at each level (and around the
+    // last level's sub-faces, whose limit masks it takes); 0 picks the scheme's own (1 where every
+    // rule reads one ring, 2-3 where rules read two; 7 for the mixed schemes' limit masks).
+    // Tests raise it to show the result does not change.
     int rings = 0;
 };
 
