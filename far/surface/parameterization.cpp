@@ -37,6 +37,15 @@ bool FaceParameterization::contains(double u, double v, double tolerance) const 
 }
 
 int FaceParameterization::subFaceAt(double u, double v, double tolerance) const {
+    if (tolerance < 0.25) {
+        // The sub-faces' squares lie a half apart, farther than two tolerances: the one that can
+        // hold u is at floor(u + tolerance) (no division per sub-face, once per point).
+        if (!(std::isfinite(u) && std::isfinite(v))) return -1;
+        const double x = std::floor(u + tolerance), y = std::floor(v + tolerance);
+        if (x < 0 || y < 0 || x >= gridWidth || u > x + 0.5 + tolerance || v > y + 0.5 + tolerance) return -1;
+        const double i = y * gridWidth + x;
+        return i < faceSize ? int(i) : -1;
+    }
     for (int i = 0; i < faceSize; ++i) {
         const double x = i % gridWidth, y = i / gridWidth;
         if (u >= x - tolerance && u <= x + 0.5 + tolerance && v >= y - tolerance && v <= y + 0.5 + tolerance)

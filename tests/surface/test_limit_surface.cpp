@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 
 #include <quadtri/far/limit_surface.h>
@@ -367,6 +368,32 @@ TEST(LimitSurface, IsContinuousAcrossEveryEdgeWithContinuousNormals) {
         EXPECT_LT(worstGap, 1e-6) << toString(scheme);
         EXPECT_LT(worstNormal, 1e-3) << toString(scheme);
         std::printf("%s: gap %.3g, normal jump %.3g rad\n", toString(scheme), worstGap, worstNormal);
+    }
+}
+
+// An n-gon's (u, v) is in sub-face i where it lies in i's half-unit square at (i % w, i / w),
+// within the tolerance: on each square's edges and just past them, in the gaps between squares,
+// outside the grid, at NaN and infinity.
+TEST(FaceParameterization, FindsTheSubFaceWhoseSquareHoldsThePoint) {
+    const double tolerance = 1e-9, inf = std::numeric_limits<double>::infinity();
+    for (int n : {3, 5, 6, 7, 8, 9, 10, 17}) {  // a quad is a unit square of its own
+        const FaceParameterization p = FaceParameterization::of(Scheme::CatmullClark, n);
+        ASSERT_EQ(p.type, FaceParameterization::Type::QuadSubFaces) << n;
+        std::vector<double> coords{-0.3, std::nan(""), inf, -inf};
+        for (int k = -1; k <= 2 * (p.gridWidth + 1); ++k)
+            for (double d : {-2 * tolerance, -tolerance / 2, 0.0, tolerance / 2, 2 * tolerance, 0.1, 0.3})
+                coords.push_back(0.5 * k + d);
+        for (double u : coords)
+            for (double v : coords) {
+                int expected = -1;
+                for (int i = 0; i < n && expected < 0; ++i) {
+                    const double x = i % p.gridWidth, y = i / p.gridWidth;
+                    if (u >= x - tolerance && u <= x + 0.5 + tolerance && v >= y - tolerance && v <= y + 0.5 + tolerance)
+                        expected = i;
+                }
+                ASSERT_EQ(p.subFaceAt(u, v, tolerance), expected) << n << "-gon (" << u << ", " << v << ")";
+                ASSERT_EQ(p.contains(u, v, tolerance), expected >= 0) << n << "-gon (" << u << ", " << v << ")";
+            }
     }
 }
 
