@@ -299,13 +299,17 @@ LocalShape& LocalShapes::cut(const Topology& base, int face, WalkScratch& baseSc
 const LocalStep& LocalShapes::step(LocalShape& shape, int child) {
     if (std::size_t(child) >= shape.steps.size()) shape.steps.resize(std::size_t(child) + 1);
     std::unique_ptr<LocalStep>& step = shape.steps[std::size_t(child)];
-    if (step) return *step;
-    refineAndCut(shape.topology, shape.face, child, rings_, options_, scratch_, work_->refined);
+    if (!step) step = makeStep(shape, child, false);
+    return *step;
+}
+
+std::unique_ptr<LocalStep> LocalShapes::makeStep(const LocalShape& shape, int child, bool wholeFace) {
+    refineAndCut(shape.topology, shape.face, child, wholeFace ? limitRings_ : rings_, options_, scratch_,
+                 work_->refined, wholeFace);
     auto made = std::make_unique<LocalStep>();
     made->child = &intern(work_->refined.level, work_->refined.cut, work_->refined.childFace, scratch_);
     fillStep(shape.topology, shape.face, work_->refined, options_, *made);
-    step = std::move(made);
-    return *step;
+    return made;
 }
 
 const LocalShape& LocalShapes::classify(LocalShape& shape) {
@@ -323,12 +327,7 @@ const LocalShape& LocalShapes::classify(LocalShape& shape) {
 }
 
 const LocalStep& LocalShapes::limitStep(LocalShape& shape) {
-    if (shape.limitStep) return *shape.limitStep;
-    refineAndCut(shape.topology, shape.face, 0, limitRings_, options_, scratch_, work_->refined, true);
-    auto made = std::make_unique<LocalStep>();
-    made->child = &intern(work_->refined.level, work_->refined.cut, work_->refined.childFace, scratch_);
-    fillStep(shape.topology, shape.face, work_->refined, options_, *made);
-    shape.limitStep = std::move(made);
+    if (!shape.limitStep) shape.limitStep = makeStep(shape, 0, true);
     return *shape.limitStep;
 }
 

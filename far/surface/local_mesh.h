@@ -145,6 +145,8 @@ public:
 
 private:
     LocalShape& intern(const Topology& level, const PatchCut& cut, int face, WalkScratch& scratch);
+    // One level down towards `child`, or (wholeFace) around all the face's children.
+    std::unique_ptr<LocalStep> makeStep(const LocalShape& shape, int child, bool wholeFace);
 
     Options options_;
     int rings_, limitRings_;
