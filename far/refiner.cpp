@@ -22,7 +22,7 @@ inline namespace v0 {
 using namespace internal;
 
 Refiner::Refiner(const TopologyDescriptor& desc, const Options& options) : options_(options) {
-    levels_.push_back(buildBaseTopology(desc, options, &warnings_));
+    levels_.push_back(buildBaseTopology(desc, options, &warnings_, &givenHoles_));
     detail_.push_back(TopologyDetail::Full);
     for (int c = 0; c < desc.numFVarChannels; ++c)
         fvar_.push_back(std::make_unique<FVarChannelRefinement>(desc, c, levels_[0], options_));

@@ -12,6 +12,7 @@
 #include <quadtri/far/limit_stencil_table.h>
 #include <quadtri/far/options.h>
 #include <quadtri/far/stencil_table.h>
+#include <quadtri/far/tag_edits.h>
 #include <quadtri/far/topology.h>
 
 namespace quadtri {
@@ -146,6 +147,19 @@ public:
     // range or without their tables.
     LevelPatchTable levelPatches(int L, int K) const;
 
+    // Sets the sharpness of level-0 edges and vertices and the holes `edits` asks for, and
+    // updates in place what the Refiner holds: every level's tags, and in each per-level table
+    // the stencils within the scheme's reach of a changed tag, recomputed and put back where
+    // they differ (docs/edits.md). Everything else it holds stays as it is, bit for bit; what it
+    // holds then equals a Refiner built from the edited descriptor, stencil for stencil (a
+    // table's weight pool may be laid out otherwise). Face-varying channels are refined again
+    // from level 0. The report lists what changed, level by level, for tables built from this
+    // Refiner (limit, factorized, patches) and their device copies. Throws TopologyError naming
+    // the edit (its index among the creases, corners or holes) that level 0 cannot take, before
+    // anything changes: a pair that is not an edge, an item out of range, a sharpness that is
+    // negative or not a number.
+    EditReport applyEdits(const TagEdits& edits);
+
     // Estimated bytes of topology, per-level table and 3-float output for refining level L-1 to L
     // (a looser bound while level L-1 holds its faces only).
     std::size_t estimateLevelBytes(int L) const;
@@ -169,6 +183,8 @@ private:
     std::vector<TopologyDetail> detail_;  // per level
     std::vector<std::optional<StencilTable>> levelTables_;  // per level 1..maxLevel(); none with LevelTables::None
     std::vector<std::unique_ptr<internal::FVarChannelRefinement>> fvar_;
+    std::vector<std::uint8_t> givenHoles_;  // per face of level 0: a hole asked for (applyEdits)
+    std::vector<std::size_t> poolMarks_;    // per level table: its pool's size when laid out (applyEdits)
 };
 
 }  // namespace v0

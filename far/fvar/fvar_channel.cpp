@@ -140,7 +140,6 @@ FVarChannelRefinement::FVarChannelRefinement(const TopologyDescriptor& desc, int
     }
     const int nc = mesh.numFaceVertices();
     completeTopology(values);
-    values.faceHole = mesh.faceHole;
     level.meshVertex.resize(std::size_t(values.numVertices));
     controlValueOf_.resize(std::size_t(values.numVertices));
     for (int k = 0; k < nc; ++k) {
@@ -149,6 +148,16 @@ FVarChannelRefinement::FVarChannelRefinement(const TopologyDescriptor& desc, int
     }
     level.meshEdge.resize(std::size_t(values.numEdges()));
     for (int k = 0; k < nc; ++k) level.meshEdge[std::size_t(values.faceEdges[std::size_t(k)])] = mesh.faceEdges[std::size_t(k)];
+    levels_.push_back(std::move(level));
+    restart(mesh, options);
+}
+
+void FVarChannelRefinement::restart(const Topology& mesh, const Options& options) {
+    levels_.resize(1);
+    tables_.clear();
+    Level& level = levels_[0];
+    Topology& values = level.values;
+    values.faceHole = mesh.faceHole;
     // A seam, a boundary or a non-manifold edge of the value mesh is infinitely sharp; every other
     // edge has its mesh edge's sharpness.
     for (int e = 0; e < values.numEdges(); ++e)
@@ -157,7 +166,6 @@ FVarChannelRefinement::FVarChannelRefinement(const TopologyDescriptor& desc, int
                                                    : mesh.edgeSharpness[std::size_t(level.meshEdge[std::size_t(e)])];
     for (int p = 0; p < values.numVertices; ++p)
         values.vertSharpness[std::size_t(p)] = mesh.vertSharpness[std::size_t(level.meshVertex[std::size_t(p)])];
-    levels_.push_back(std::move(level));
     tagLevel0(mesh, options);
     sharpen(levels_[0], options);
 }

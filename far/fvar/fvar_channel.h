@@ -43,6 +43,10 @@ public:
     // topology), `meshChild` its level L (faces at least).
     void refine(const Topology& meshParent, const Topology& meshChild, const Options& options);
 
+    // Level 0 again, its tags read anew from the mesh's level 0 (`mesh`, edited since): the
+    // levels refined are let go (Refiner::applyEdits refines them again).
+    void restart(const Topology& mesh, const Options& options);
+
     int maxLevel() const { return int(levels_.size()) - 1; }
     // Values of level L: the channel's own at L = 0, the value mesh's vertices after.
     int numValues(int L) const { return L == 0 ? numControlValues_ : levels_.at(L).values.numVertices; }

@@ -104,6 +104,22 @@ LimitStencilTableD buildLimitStencils(const Topology& level, const Options& opti
     return table;
 }
 
+LimitStencilTableD buildLimitStencilsOf(const Topology& level, const Options& options, const RingStarts* starts,
+                                        const std::vector<int>& vertices, LimitMaskCache& cache) {
+    const SchemeRules& rules = rulesOf(options.scheme);
+    LimitStencilTableD table;
+    table.numSourceVertices = level.numVertices;
+    VertexRing ring;
+    LimitMask mask;
+    for (int v : vertices) {
+        table.offsets.push_back(int(table.indices.size()));
+        limitMaskOf(level, options, rules, starts, v, ring, cache, mask, table.weights);
+        table.sizes.push_back(mask.size());
+        table.indices.insert(table.indices.end(), mask.indices.begin(), mask.indices.end());
+    }
+    return table;
+}
+
 namespace {
 
 // Stencil i of limit ∘ inner appended to `indices` and `weights` (three per entry): each limit

@@ -28,11 +28,18 @@ struct LimitStencilTableD {
 };
 
 class RingStarts;
+class LimitMaskCache;
 
 // The limit masks of every vertex of `level` (full topology) over its own vertices. `starts`
 // says where interior rings start (as OpenSubdiv does after refining, far/limit/limit_ring.h);
 // null: at each vertex's lowest-numbered face, as OpenSubdiv does at level 0.
 LimitStencilTableD buildLimitStencils(const Topology& level, const Options& options, const RingStarts* starts);
+
+// The limit masks of `vertices` alone, stencil k that of vertices[k], each as buildLimitStencils
+// makes it, bit for bit; `cache` may be kept between calls (its answers do not depend on what it
+// holds). One thread.
+LimitStencilTableD buildLimitStencilsOf(const Topology& level, const Options& options, const RingStarts* starts,
+                                        const std::vector<int>& vertices, LimitMaskCache& cache);
 
 // toFloatTable(buildLimitStencils(level, options, starts)), bit for bit, without the double table:
 // the masks made, sorted and rounded in parts on the threads, interned in vertex order on one.

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "far/limit/limit_closed_forms.h"
 #include "far/schemes/schaefer_warren.h"
 
@@ -7,16 +9,34 @@ namespace quadtri {
 inline namespace v0 {
 namespace internal {
 
-UnzippedLevel::UnzippedLevel(const Topology& t) : copies(unzipCopies(t)) {
+namespace {
+
+std::vector<int> verticesOf(const Topology& t, const std::vector<int>& faces) {
+    std::vector<int> vertices;
+    for (int f : faces)
+        for (int v : t.verticesOfFace(f)) vertices.push_back(v);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+}
+
+}  // namespace
+
+UnzippedLevel::UnzippedLevel(const Topology& t, const std::vector<int>* faces)
+    : copies(faces ? unzipCopies(t, verticesOf(t, *faces)) : unzipCopies(t)) {
     if (copies.splitting.empty()) return;
     faceTouches.assign(std::size_t(t.numFaces()), 0);
-    forEach(t.numFaces(), [&](int f) {
+    auto touch = [&](int f) {
         for (int v : t.verticesOfFace(f))
             if (copies.splits(v)) {
                 faceTouches[f] = 1;
                 return;
             }
-    });
+    };
+    if (faces)
+        for (int f : *faces) touch(f);
+    else
+        forEach(t.numFaces(), touch);
 }
 
 SchaeferWarrenMasks::SchaeferWarrenMasks(const Topology& topology, const UnzippedLevel& unzipped,
@@ -163,8 +183,9 @@ public:
         return "Stam-Loop plus unzipping of the tri/quad network: C2 across the ordinary seam";
     }
     bool regularMasksApply() const override { return true; }
-    std::unique_ptr<SchemeLevel> prepareLevel(const Topology& parent, const Options&) const override {
-        return std::make_unique<UnzippedLevel>(parent);
+    std::unique_ptr<SchemeLevel> prepareLevel(const Topology& parent, const Options&,
+                                              const std::vector<int>* faces) const override {
+        return std::make_unique<UnzippedLevel>(parent, faces);
     }
     std::unique_ptr<SchemeMasks> makeMasks(const Topology& parent, const Options&, const SchemeLevel* prepared,
                                            SparseAccumulator& accumulator) const override {

@@ -21,7 +21,8 @@ namespace internal {
 // the vertices that split) and which faces have such a vertex. Built once per level and shared,
 // read-only, by the threads building its masks; empty on a level without network edges.
 struct UnzippedLevel : SchemeLevel {
-    explicit UnzippedLevel(const Topology& topology);
+    // With `faces`, the copies of their vertices only, and the flags of those faces.
+    explicit UnzippedLevel(const Topology& topology, const std::vector<int>* faces = nullptr);
 
     UnzippedCopies copies;
     std::vector<uint8_t> faceTouches;  // per face: one of its vertices splits (empty where none does)

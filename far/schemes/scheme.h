@@ -116,7 +116,11 @@ public:
     virtual bool regularMasksApply() const { return false; }
 
     // Built once per level before the masks, shared read-only by all workers; null if none.
-    virtual std::unique_ptr<SchemeLevel> prepareLevel(const Topology& /*parent*/, const Options& /*options*/) const {
+    // With `faces` (sorted), only what the masks read within those faces of the level is
+    // prepared: enough for the children of faces `surfaceRings()` rings inside them (an edit's
+    // masks, far/edit/).
+    virtual std::unique_ptr<SchemeLevel> prepareLevel(const Topology& /*parent*/, const Options& /*options*/,
+                                                      const std::vector<int>* /*faces*/ = nullptr) const {
         return nullptr;
     }
     // A worker's masks; `prepared` is what prepareLevel returned for this level.

@@ -93,6 +93,34 @@ UnzippedCopies unzipCopies(const Topology& t) {
     return u;
 }
 
+UnzippedCopies unzipCopies(const Topology& t, const std::vector<int>& vertices) {
+    UnzippedCopies u;
+    std::vector<int> counts;
+    for (int v : vertices) {
+        int count = 0;
+        if (!keepsOnePosition(t, v))
+            for (int e : t.edgesOfVertex(v)) count += isNetworkEdge(t, e) ? 1 : 0;
+        counts.push_back(count);
+    }
+    if (std::all_of(counts.begin(), counts.end(), [](int c) { return c == 0; })) return u;
+    u.rowOf.assign(std::size_t(t.numVertices), -1);
+    u.splitting.assign(std::size_t(t.numVertices), 0);
+    u.offsets.push_back(0);
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+        if (counts[k] == 0) continue;
+        u.splitting[std::size_t(vertices[k])] = 1;
+        u.rowOf[std::size_t(vertices[k])] = int(u.offsets.size()) - 1;
+        u.offsets.push_back(u.offsets.back() + 1 + counts[k]);
+    }
+    const std::size_t entries = std::size_t(u.offsets.back());
+    u.indices.resize(entries);
+    u.triangleWeights.resize(entries);
+    u.quadWeights.resize(entries);
+    for (int v : vertices)
+        if (u.splitting[std::size_t(v)]) writeRow(t, v, u.rowOf[std::size_t(v)], u);
+    return u;
+}
+
 std::size_t unzipBytesBound(const Topology& t) {
     // Each network edge puts an entry in the rows of both its ends; a splitting vertex has one.
     const std::size_t edges = t.edgeFlags.empty() ? edgeCountBound(t) : countNetworkEdges(t);

@@ -46,6 +46,8 @@ struct UnzippedCopies {
 };
 
 UnzippedCopies unzipCopies(const Topology& topology);
+// The same for `vertices` (sorted) alone: the others neither split nor have rows.
+UnzippedCopies unzipCopies(const Topology& topology, const std::vector<int>& vertices);
 
 // Bytes unzipCopies may take for a level (SchemeRules::extraLevelBytes); `topology` may hold its
 // faces only (a looser bound then).

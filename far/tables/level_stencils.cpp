@@ -103,63 +103,132 @@ void vertexMask(const LevelInputs& in, Worker& w, int v) {
     }
 }
 
-// Masks of children [first, last) in child order (face points, edge points, vertex points).
-// Float tables of smooth levels take the regular masks' short cut (regular_masks.h) where the
-// scheme allows it (SchemeRules::regularMasksApply, SchemeMasks::regularFace / regularEdge / regularVertex).
+// Builds the masks of one worker's children, one call of build(c) per child, appended in the
+// order of the calls. Float tables of smooth levels take the regular masks' short cut
+// (regular_masks.h) where the scheme allows it (SchemeRules::regularMasksApply,
+// SchemeMasks::regularFace / regularEdge / regularVertex).
 template <typename Table>
-void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, int last) {
-    Worker w(in);
-    const int edgePoints = in.num.numFacePoints, vertexPoints = edgePoints + in.t.numEdges();
-    constexpr bool kFloat = std::is_same_v<Table, StencilTable>;
-    const bool shortCut = kFloat && in.smooth && in.rules.regularMasksApply();
-    RegularMasks regular(in.t);
-    constexpr int kMaxGathered = 2 * RegularMasks::kMaxValence + 1;
-    int gathered[kMaxGathered];  // the first mask of a key's vertices, compared with the rules'
-    for (int c = first; c < last; ++c) {
-        if (in.wanted && !in.wanted[c]) {
-            writer.appendEmpty();
-            continue;
-        }
+class MaskBuilder {
+public:
+    MaskBuilder(const LevelInputs& in, StencilWriter<Table>& writer) : in_(in), writer_(writer), w_(in), regular_(in.t) {}
+
+    void build(int c) {
         int n = 0, key = 0;
         if constexpr (kFloat) {
             // Gathered straight into the table, kept there when the key's weights are known.
-            if (shortCut) {
-                int* out = writer.nextIndices(kMaxGathered);
-                if (c < edgePoints) {
-                    const int f = in.faceOfPoint[c];
-                    if (w.masks->regularFace(f)) n = regular.face(f, out, key);
-                } else if (c < vertexPoints) {
-                    const int e = c - edgePoints;
-                    if (w.masks->regularEdge(e)) n = regular.edge(e, out, key);
+            if (shortCut_) {
+                int* out = writer_.nextIndices(kMaxGathered);
+                if (c < edgePoints_) {
+                    const int f = in_.faceOfPoint[c];
+                    if (w_.masks->regularFace(f)) n = regular_.face(f, out, key);
+                } else if (c < vertexPoints_) {
+                    const int e = c - edgePoints_;
+                    if (w_.masks->regularEdge(e)) n = regular_.edge(e, out, key);
                 } else {
-                    const int v = c - vertexPoints;
-                    if (w.masks->regularVertex(v)) n = regular.vertex(v, out, key);
+                    const int v = c - vertexPoints_;
+                    if (w_.masks->regularVertex(v)) n = regular_.vertex(v, out, key);
                 }
-                if (n > 0 && regular.weights(key) >= 0) {
-                    writer.appendGathered(n, regular.weights(key));
-                    continue;
+                if (n > 0 && regular_.weights(key) >= 0) {
+                    writer_.appendGathered(n, regular_.weights(key));
+                    return;
                 }
-                if (n > 0) std::copy(out, out + n, gathered);
+                if (n > 0) std::copy(out, out + n, gathered_);
             }
         }
-        if (c < edgePoints)
-            w.masks->facePoint(in.faceOfPoint[c], 1.0);
-        else if (c < vertexPoints)
-            edgeMask(in, w, c - edgePoints);
+        if (c < edgePoints_)
+            w_.masks->facePoint(in_.faceOfPoint[c], 1.0);
+        else if (c < vertexPoints_)
+            edgeMask(in_, w_, c - edgePoints_);
         else
-            vertexMask(in, w, c - vertexPoints);
-        writer.append(w.acc);
+            vertexMask(in_, w_, c - vertexPoints_);
+        writer_.append(w_.acc);
         if constexpr (kFloat) {
-            if (n > 0 && regular.weights(key) == RegularMasks::kUnknown)
-                regular.setWeights(key, writer.lastHasIndices(gathered, n) ? writer.lastWeightOffset()
-                                                                           : RegularMasks::kNever);
+            if (n > 0 && regular_.weights(key) == RegularMasks::kUnknown)
+                regular_.setWeights(key, writer_.lastHasIndices(gathered_, n) ? writer_.lastWeightOffset()
+                                                                              : RegularMasks::kNever);
         }
+    }
+
+private:
+    static constexpr bool kFloat = std::is_same_v<Table, StencilTable>;
+    static constexpr int kMaxGathered = 2 * RegularMasks::kMaxValence + 1;
+
+    const LevelInputs& in_;
+    StencilWriter<Table>& writer_;
+    Worker w_;
+    RegularMasks regular_;
+    const int edgePoints_ = in_.num.numFacePoints, vertexPoints_ = edgePoints_ + in_.t.numEdges();
+    const bool shortCut_ = kFloat && in_.smooth && in_.rules.regularMasksApply();
+    int gathered_[kMaxGathered];  // the first mask of a key's vertices, compared with the rules'
+};
+
+// Masks of children [first, last) in child order (face points, edge points, vertex points).
+template <typename Table>
+void buildRange(const LevelInputs& in, StencilWriter<Table>& writer, int first, int last) {
+    MaskBuilder<Table> builder(in, writer);
+    for (int c = first; c < last; ++c) {
+        if (in.wanted && !in.wanted[c])
+            writer.appendEmpty();
+        else
+            builder.build(c);
     }
 }
 
 // Children per part below which a level is not split: a part's worker setup and the copy that
 // joins it must stay small next to its masks.
 constexpr int kMinChildrenPerPart = 32768;
+
+// The child sharpness the masks read: per vertex's edges, and per edge end under Chaikin; at
+// every vertex, or at those the masks of `children` read.
+void prepareSharpness(LevelInputs& in, const std::vector<float>* childEdgeSharpness, const std::vector<int>* children) {
+    if (in.smooth) return;
+    const Topology& t = in.t;
+    in.childEdgeSharpness.resize(t.vertEdges.size());
+    if (childEdgeSharpness) in.childEdgeSharpness = *childEdgeSharpness;
+    const bool chaikin = in.options.creaseMethod == CreaseMethod::Chaikin;  // edge points read both ends
+    if (chaikin) in.childSharpnessAtEnds.resize(t.edgeVerts.size());
+    auto prepare = [&](int v) {
+        if (!childEdgeSharpness)
+            childEdgeSharpnessAtVertex(t, v, in.options.creaseMethod, in.childEdgeSharpness.data() + t.vertEdgeOffsets[v]);
+        const IndexSpan edges = t.edgesOfVertex(v);
+        for (int i = 0; chaikin && i < edges.size(); ++i) {
+            const int e = edges[i];
+            in.childSharpnessAtEnds[2 * e + (t.edgeVerts[2 * e] == v ? 0 : 1)] = in.childEdgeSharpness[t.vertEdgeOffsets[v] + i];
+        }
+    };
+    if (!children) {
+        for (int v = 0; v < t.numVertices; ++v) prepare(v);
+        return;
+    }
+    const int edgePoints = in.num.numFacePoints, vertexPoints = edgePoints + t.numEdges();
+    std::vector<int> vertices;
+    for (int c : *children) {
+        if (c >= vertexPoints) {
+            vertices.push_back(c - vertexPoints);
+        } else if (c >= edgePoints && chaikin) {
+            vertices.push_back(t.edgeVerts[2 * (c - edgePoints)]);
+            vertices.push_back(t.edgeVerts[2 * (c - edgePoints) + 1]);
+        }
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    for (int v : vertices) prepare(v);
+}
+
+// `children` and `faces`, when given: only the masks of those children are built, and the
+// scheme prepares only the level's `faces` (SchemeRules::prepareLevel).
+LevelInputs makeInputs(const Topology& t, const ChildNumbering& num, const Options& options,
+                       const std::vector<float>* childEdgeSharpness, const std::uint8_t* wanted,
+                       const std::vector<int>* children = nullptr, const std::vector<int>* faces = nullptr) {
+    const SchemeRules& rules = rulesOf(options.scheme);
+    const bool smooth = !rules.usesSharpness() || !hasSharpness(t);
+    LevelInputs in{t, num, options, rules, std::vector<int>(num.numFacePoints), {}, {}, smooth,
+                   rules.prepareLevel(t, options, faces), wanted};
+    for (int f = 0; f < t.numFaces(); ++f)
+        if (num.facePoint[f] >= 0) in.faceOfPoint[num.facePoint[f]] = f;
+    prepareSharpness(in, childEdgeSharpness, children);
+    return in;
+}
 
 }  // namespace
 
@@ -169,28 +238,7 @@ template <typename Table>
 Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Options& options,
                          const std::vector<float>* childEdgeSharpness, const std::vector<std::uint8_t>* wanted) {
     const int numChildren = num.numFacePoints + t.numEdges() + t.numVertices;
-    const SchemeRules& rules = rulesOf(options.scheme);
-    const bool smooth = !rules.usesSharpness() || !hasSharpness(t);
-    LevelInputs in{t, num, options, rules, std::vector<int>(num.numFacePoints), {}, {}, smooth,
-                   rules.prepareLevel(t, options), wanted ? wanted->data() : nullptr};
-    for (int f = 0; f < t.numFaces(); ++f)
-        if (num.facePoint[f] >= 0) in.faceOfPoint[num.facePoint[f]] = f;
-    if (!smooth) {
-        in.childEdgeSharpness.resize(t.vertEdges.size());
-        if (childEdgeSharpness) in.childEdgeSharpness = *childEdgeSharpness;
-        const bool chaikin = options.creaseMethod == CreaseMethod::Chaikin;  // edge points read both ends
-        if (chaikin) in.childSharpnessAtEnds.resize(t.edgeVerts.size());
-        for (int v = 0; v < t.numVertices; ++v) {
-            if (!childEdgeSharpness)
-                childEdgeSharpnessAtVertex(t, v, options.creaseMethod, in.childEdgeSharpness.data() + t.vertEdgeOffsets[v]);
-            const IndexSpan edges = t.edgesOfVertex(v);
-            for (int i = 0; chaikin && i < edges.size(); ++i) {
-                const int e = edges[i];
-                in.childSharpnessAtEnds[2 * e + (t.edgeVerts[2 * e] == v ? 0 : 1)] =
-                    in.childEdgeSharpness[t.vertEdgeOffsets[v] + i];
-            }
-        }
-    }
+    const LevelInputs in = makeInputs(t, num, options, childEdgeSharpness, wanted ? wanted->data() : nullptr);
 
     // Reserve an upper bound of the entries: untouched reserved pages cost nothing, while
     // growing by doubling would copy and touch the arrays several times over.
@@ -222,6 +270,23 @@ Table buildLevelStencils(const Topology& t, const ChildNumbering& num, const Opt
     return table;
 }
 
+template <typename Table>
+Table buildChildStencils(const Topology& t, const ChildNumbering& num, const Options& options,
+                         const std::vector<int>& children, const std::vector<int>& faces) {
+    const LevelInputs in = makeInputs(t, num, options, nullptr, nullptr, &children, &faces);
+    Table table;
+    table.numSourceVertices = t.numVertices;
+    StencilWriter<Table> writer(table, int(children.size()), 16 * children.size());
+    MaskBuilder<Table> builder(in, writer);
+    for (int c : children) builder.build(c);
+    writer.finish();
+    return table;
+}
+
+template StencilTable buildChildStencils<StencilTable>(const Topology&, const ChildNumbering&, const Options&,
+                                                       const std::vector<int>&, const std::vector<int>&);
+template StencilTableD buildChildStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&,
+                                                         const std::vector<int>&, const std::vector<int>&);
 template StencilTable buildLevelStencils<StencilTable>(const Topology&, const ChildNumbering&, const Options&,
                                                        const std::vector<float>*, const std::vector<std::uint8_t>*);
 template StencilTableD buildLevelStencils<StencilTableD>(const Topology&, const ChildNumbering&, const Options&,

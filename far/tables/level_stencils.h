@@ -32,6 +32,14 @@ Table buildLevelStencils(const Topology& parent, const ChildNumbering& numbering
                          const std::vector<float>* childEdgeSharpness = nullptr,
                          const std::vector<std::uint8_t>* wanted = nullptr);
 
+// The masks of `children` (child indices in the order of `numbering`) alone, stencil k the
+// mask of children[k]: each has the indices and weights it has in buildLevelStencils' whole
+// table. `faces` (sorted) must hold every face within the scheme's surfaceRings() of a child's
+// parent face: only those are prepared. What an edit recomputes (far/edit/).
+template <typename Table>
+Table buildChildStencils(const Topology& parent, const ChildNumbering& numbering, const Options& options,
+                         const std::vector<int>& children, const std::vector<int>& faces);
+
 }  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -344,23 +344,37 @@ private:
     std::vector<int> faceOfPoint_;     // parent face of each face point
 };
 
-// Halves of parent edges inherit decayed sharpness (Chaikin per end); interior edges are smooth.
-// Vertex points inherit uniformly decayed vertex sharpness.
-void inheritSharpness(const Topology& p, const ChildNumbering& num, CreaseMethod method, Topology& c) {
-    std::vector<float> childSharpness;
-    for (int v = 0; v < p.numVertices; ++v) {
-        c.vertSharpness[num.vertexPoint(v)] = decrementSharpness(p.vertSharpness[v]);
-        const int n = p.vertexEdgeCount(v);
-        childSharpness.resize(n);
-        childEdgeSharpnessAtVertex(p, v, method, childSharpness.data());
-        const IndexSpan edges = p.edgesOfVertex(v);
-        for (int i = 0; i < n; ++i) {
-            // A collapsed edge is listed twice in a row: its first half, then its second.
-            const int e = edges[i];
-            const bool second = p.edgeVerts[2 * e] != v || (i > 0 && edges[i - 1] == e);
-            c.edgeSharpness[2 * e + (second ? 1 : 0)] = childSharpness[i];
-        }
+}  // namespace
+
+std::vector<int> firstChildFaces(const Topology& p, const ChildNumbering& num) {
+    std::vector<int> first(std::size_t(p.numFaces()) + 1, 0);
+    for (int f = 0; f < p.numFaces(); ++f) {
+        const int n = p.faceSize(f);
+        first[std::size_t(f) + 1] = first[std::size_t(f)] + (num.splitsInFour(n) ? 4 : n);
     }
+    return first;
+}
+
+void inheritSharpnessAt(const Topology& p, const ChildNumbering& num, CreaseMethod method, int v, Topology& c,
+                        std::vector<float>& scratch) {
+    c.vertSharpness[num.vertexPoint(v)] = decrementSharpness(p.vertSharpness[v]);
+    const int n = p.vertexEdgeCount(v);
+    scratch.resize(n);
+    childEdgeSharpnessAtVertex(p, v, method, scratch.data());
+    const IndexSpan edges = p.edgesOfVertex(v);
+    for (int i = 0; i < n; ++i) {
+        // A collapsed edge is listed twice in a row: its first half, then its second.
+        const int e = edges[i];
+        const bool second = p.edgeVerts[2 * e] != v || (i > 0 && edges[i - 1] == e);
+        c.edgeSharpness[2 * e + (second ? 1 : 0)] = scratch[i];
+    }
+}
+
+namespace {
+
+void inheritSharpness(const Topology& p, const ChildNumbering& num, CreaseMethod method, Topology& c) {
+    std::vector<float> scratch;
+    for (int v = 0; v < p.numVertices; ++v) inheritSharpnessAt(p, num, method, v, c, scratch);
 }
 
 }  // namespace

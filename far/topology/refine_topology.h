@@ -40,6 +40,15 @@ ChildNumbering numberChildren(const Topology& parent, TriangleSplit split = Tria
 Topology refineTopology(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod,
                         TopologyDetail detail = TopologyDetail::Full);
 
+// The sharpness vertex v passes on: its vertex point's, and that of the halves of its edges at
+// its end (docs/schemes/creases.md, §2). `scratch` is any vector, reused between calls.
+void inheritSharpnessAt(const Topology& parent, const ChildNumbering& numbering, CreaseMethod creaseMethod, int v,
+                        Topology& child, std::vector<float>& scratch);
+
+// The first child face of each parent face, and their total last: a face split in four has 4,
+// any other face one per corner.
+std::vector<int> firstChildFaces(const Topology& parent, const ChildNumbering& numbering);
+
 }  // namespace internal
 }  // namespace v0
 }  // namespace quadtri

@@ -258,27 +258,38 @@ std::string describeLoops(const FaceLoops& loops) {
 
 }  // namespace
 
+float internal::ruledEdgeSharpness(const Topology& t, int e, float sharpness) {
+    return (t.edgeFlags[e] & (kEdgeBoundary | kEdgeNonManifold)) ? kInfiniteSharpness : sharpness;
+}
+
+float internal::ruledVertexSharpness(const Topology& t, int v, const Options& options, float sharpness) {
+    const uint8_t flags = t.vertFlags[v];
+    if ((flags & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner) {
+        sharpness = kInfiniteSharpness;
+    } else if (flags & kVertexNonManifold) {
+        // A non-manifold crease (two opposing non-manifold edges carrying extra fins, no
+        // boundary) stays a crease; every other non-manifold vertex becomes a corner.
+        int nonManifoldEdges = 0;
+        for (int e : t.edgesOfVertex(v)) nonManifoldEdges += (t.edgeFlags[e] & kEdgeNonManifold) ? 1 : 0;
+        const bool nonManifoldCrease =
+            nonManifoldEdges == 2 && !(flags & kVertexBoundary) && t.vertexFaceCount(v) > t.vertexEdgeCount(v);
+        if (!nonManifoldCrease) sharpness = kInfiniteSharpness;
+    }
+    if (t.vertexFaceCount(v) == 0) sharpness = kInfiniteSharpness;  // isolated: stays put
+    return sharpness;
+}
+
+bool internal::ruledHole(const Topology& t, int f, const Options& options, bool given) {
+    if (given || options.boundary != BoundaryInterpolation::None) return given;
+    for (int v : t.verticesOfFace(f))
+        if ((t.vertFlags[v] & kVertexBoundary) && t.vertSharpness[v] < kInfiniteSharpness) return true;
+    return false;
+}
+
 void internal::applyBoundaryRules(Topology& t, const Options& options) {
     // Boundary and non-manifold edges are infinitely sharp.
-    forEach(t.numEdges(), [&t](int e) {
-        if (t.edgeFlags[e] & (kEdgeBoundary | kEdgeNonManifold)) t.edgeSharpness[e] = kInfiniteSharpness;
-    });
-
-    forEach(t.numVertices, [&t, &options](int v) {
-        const uint8_t flags = t.vertFlags[v];
-        if ((flags & kVertexCorner) && options.boundary == BoundaryInterpolation::EdgeAndCorner) {
-            t.vertSharpness[v] = kInfiniteSharpness;
-        } else if (flags & kVertexNonManifold) {
-            // A non-manifold crease (two opposing non-manifold edges carrying extra fins, no
-            // boundary) stays a crease; every other non-manifold vertex becomes a corner.
-            int nonManifoldEdges = 0;
-            for (int e : t.edgesOfVertex(v)) nonManifoldEdges += (t.edgeFlags[e] & kEdgeNonManifold) ? 1 : 0;
-            const bool nonManifoldCrease = nonManifoldEdges == 2 && !(flags & kVertexBoundary) &&
-                                           t.vertexFaceCount(v) > t.vertexEdgeCount(v);
-            if (!nonManifoldCrease) t.vertSharpness[v] = kInfiniteSharpness;
-        }
-        if (t.vertexFaceCount(v) == 0) t.vertSharpness[v] = kInfiniteSharpness;  // isolated: stays put
-    });
+    forEach(t.numEdges(), [&t](int e) { t.edgeSharpness[e] = ruledEdgeSharpness(t, e, t.edgeSharpness[e]); });
+    forEach(t.numVertices, [&t, &options](int v) { t.vertSharpness[v] = ruledVertexSharpness(t, v, options, t.vertSharpness[v]); });
     if (options.boundary == BoundaryInterpolation::None) {
         for (int v = 0; v < t.numVertices; ++v) {
             if (!(t.vertFlags[v] & kVertexBoundary) || t.vertSharpness[v] >= kInfiniteSharpness) continue;
@@ -297,7 +308,7 @@ void internal::completeTopologyFromEdges(Topology& t) {
 }
 
 Topology internal::buildBaseTopology(const TopologyDescriptor& desc, const Options& options,
-                           std::vector<TopologyDiagnostic>* warnings) {
+                                     std::vector<TopologyDiagnostic>* warnings, std::vector<uint8_t>* givenHoles) {
     validateDescriptor(desc);
     // Level 0 and its scratch: per vertex its incidence offsets, flags, sharpness and edge
     // buckets; per corner its face, edge and incidence entries and at most one edge. Checked
@@ -366,6 +377,7 @@ Topology internal::buildBaseTopology(const TopologyDescriptor& desc, const Optio
         std::fill(t.faceHole.begin() + firstFace[size_t(f)], t.faceHole.begin() + firstFace[size_t(f) + 1], uint8_t(1));
     }
 
+    if (givenHoles) *givenHoles = t.faceHole;
     applyBoundaryRules(t, options);
     return t;
 }
