@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <future>
 #include <cmath>
 
 #include <quadtri/osd/cpu_evaluator.h>
@@ -38,54 +39,61 @@ ViewedSurface::ViewedSurface(VulkanContext& ctx, VkRenderPass renderPass, const 
     renderer_.setTexture(texture);
 }
 
+namespace {
+
+// The UVs of level L on the CPU (they do not move with the skin), none without a channel.
+std::vector<float> levelUVs(const Refiner& refiner, int level, const std::vector<float>& controlUVs) {
+    if (refiner.numFVarChannels() == 0) return {};
+    return std::move(cli::evaluateLevels(cli::EvaluatorKind::Cpu, {cli::fvarLevels(refiner, 0, level, controlUVs, 2)})[0]);
+}
+
+std::unique_ptr<realtime::FrameEvaluator> makeEvaluator(VulkanContext& ctx, const realtime::SurfaceTables& tables,
+                                                        cli::EvaluatorKind kind) {
+    if (kind == cli::EvaluatorKind::Vulkan) return std::make_unique<realtime::VulkanFrameEvaluator>(ctx, tables);
+    return std::make_unique<realtime::HostFrameEvaluator>(tables, kind == cli::EvaluatorKind::Tbb);
+}
+
+}  // namespace
+
 void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int level, cli::EvaluatorKind kind,
                             realtime::TableRoute route) {
     auto refiner = std::make_unique<Refiner>(cli::makeRefiner(mesh, options));
-    refiner->refineUniform(level);
+    refiner->refineUniform(level, TopologyDetail::Full);  // an edit's limit table update reads level N in full
     // Level 0 has neither a factorized table nor patches; where the budget refuses the factorized
     // table, the per-level route.
     auto tables = std::make_unique<realtime::SurfaceTables>(
         level == 0 ? realtime::SurfaceTables(*refiner, 0, realtime::TableRoute::LevelsThenLimit)
         : route == realtime::TableRoute::FactorizedLimit ? realtime::fastestSurfaceTables(*refiner, level)
                                                           : realtime::SurfaceTables(*refiner, level, route));
-    std::unique_ptr<realtime::FrameEvaluator> evaluator;
-    if (kind == cli::EvaluatorKind::Vulkan)
-        evaluator = std::make_unique<realtime::VulkanFrameEvaluator>(ctx_, *tables);
-    else
-        evaluator = std::make_unique<realtime::HostFrameEvaluator>(*tables, kind == cli::EvaluatorKind::Tbb);
-    // The UVs on the CPU: they do not move with the skin.
-    std::vector<float> uvs;
-    if (refiner->numFVarChannels() > 0)
-        uvs = std::move(cli::evaluateLevels(cli::EvaluatorKind::Cpu, {cli::fvarLevels(*refiner, 0, level, mesh.uvs, 2)})[0]);
+    std::unique_ptr<realtime::FrameEvaluator> evaluator = makeEvaluator(ctx_, *tables, kind);
+    const std::vector<float> uvs = levelUVs(*refiner, level, mesh.uvs);
 
     // Everything that can throw is done. The renderer lets go of the old evaluator's buffers
     // before they go (the new evaluator's, or its own, zero until the first update), and is
     // given them again after the new level's surface.
     onDevice_ = kind == cli::EvaluatorKind::Vulkan;
-    const std::vector<float> zeros(onDevice_ ? 0 : 3 * std::size_t(tables->numPoints), 0.0f);
-    auto bindVertices = [&] {
-        if (!onDevice_) return renderer_.uploadVertices(zeros.data(), zeros.data(), tables_->numPoints);
-        auto& device = static_cast<realtime::VulkanFrameEvaluator&>(*evaluator_);
-        renderer_.useVertexBuffers({device.positions().buffer(), 0}, {device.normals().buffer(), 0});
-    };
     evaluator_.swap(evaluator);
     tables_.swap(tables);
     bindVertices();
     evaluator.reset();  // the old one, which read the old tables
     tables.reset();
+    pendingLimitUpdate_ = {};  // waits for the old one, which reads the old Refiner
+    limitUpdate_.reset();
     refiner_ = std::move(refiner);
+    if (!tables_->patches) {
+        // What an edit's update of the limit table needs (the level's limit masks) is made on
+        // another thread while the surface is shown, so that the first edit need not wait for it.
+        const LimitTableUpdate::Sources sources = tables_->route == realtime::TableRoute::FactorizedLimit
+                                                      ? LimitTableUpdate::Sources::Control
+                                                      : LimitTableUpdate::Sources::Level;
+        pendingLimitUpdate_ = std::async(std::launch::async, [&r = *refiner_, level, sources] {
+            return std::make_unique<LimitTableUpdate>(r, level, sources);
+        });
+    }
     level_ = level;
     kind_ = kind;
-    limitSurface_.reset();
-    tessellation_.reset();
-    deviceTessellation_.reset();
-    edgeRates_.clear();
-    // The host evaluators' read-back is in level order; the device's buffers are the table's.
-    elementOfVertex_.clear();
-    if (onDevice_ && tables_->patches) elementOfVertex_ = tables_->patches->pointOfVertex();
-    render::showLevel(renderer_, *refiner_, level, uvs.empty() ? nullptr : uvs.data(),
-                      elementOfVertex_.empty() ? nullptr : &elementOfVertex_);
-    bindVertices();
+    controlUVs_ = mesh.uvs;
+    present(uvs);
     rest_ = mesh.positions;
     cage_ = rest_;
     skin_.reset();
@@ -97,6 +105,65 @@ void ViewedSurface::rebuild(const io::ObjMesh& mesh, const Options& options, int
     }
     const Topology& level0 = refiner_->level(0);
     edges_.assign(level0.edgeVerts.begin(), level0.edgeVerts.begin() + 2 * std::ptrdiff_t(level0.numEdges()));
+}
+
+double ViewedSurface::edit(const TagEdits& edits) {
+    if (!ready()) return 0.0;
+    const Clock::time_point start = Clock::now();
+    if (!limitUpdate_ && pendingLimitUpdate_.valid()) limitUpdate_ = pendingLimitUpdate_.get();  // before the Refiner changes
+    const EditReport report = refiner_->applyEdits(edits);
+    if (!report.changed()) return msSince(start);
+    realtime::SurfaceTables& tables = *tables_;
+    // Copies of the per-level tables that changed; the limit table updated in place; the patch
+    // table made again (which faces are regular patches may change).
+    bool levelsChanged = false, holesChanged = false;
+    for (std::size_t L = 1; L < report.levels.size(); ++L) {
+        holesChanged = holesChanged || !report.levels[L].faces.empty();
+        if (L > tables.levels.size() || report.levels[L].stencils.empty()) continue;
+        tables.levels[L - 1] = refiner_->levelStencils(int(L));
+        levelsChanged = true;
+    }
+    if (tables.patches) {
+        *tables.patches = refiner_->levelPatches(level_, realtime::patchLevelFor(level_));
+    } else {
+        limitUpdate_->update(report, tables.limit);
+        if (holesChanged && tables.route == realtime::TableRoute::LevelsThenLimit)
+            tables.fallback = buildMeshNormalTable(refiner_->faces(level_));
+    }
+    // The host evaluators read the limit table where it is; what they derive from the per-level
+    // tables, and the device's copies, are made again.
+    const bool newEvaluator = onDevice_ || levelsChanged || tables.patches;
+    const bool show = holesChanged || refiner_->numFVarChannels() > 0 || tessellation_ || (onDevice_ && tables.patches);
+    if (newEvaluator) {
+        std::unique_ptr<realtime::FrameEvaluator> evaluator = makeEvaluator(ctx_, tables, kind_);
+        evaluator_.swap(evaluator);
+        bindVertices();
+        evaluator.reset();
+    }
+    if (show) present(levelUVs(*refiner_, level_, controlUVs_));
+    return msSince(start);
+}
+
+void ViewedSurface::bindVertices() {
+    if (!onDevice_) {
+        const std::vector<float> zeros(3 * std::size_t(tables_->numPoints), 0.0f);
+        return renderer_.uploadVertices(zeros.data(), zeros.data(), tables_->numPoints);
+    }
+    auto& device = static_cast<realtime::VulkanFrameEvaluator&>(*evaluator_);
+    renderer_.useVertexBuffers({device.positions().buffer(), 0}, {device.normals().buffer(), 0});
+}
+
+void ViewedSurface::present(const std::vector<float>& uvs) {
+    limitSurface_.reset();
+    tessellation_.reset();
+    deviceTessellation_.reset();
+    edgeRates_.clear();
+    // The host evaluators' read-back is in level order; the device's buffers are the table's.
+    elementOfVertex_.clear();
+    if (onDevice_ && tables_->patches) elementOfVertex_ = tables_->patches->pointOfVertex();
+    render::showLevel(renderer_, *refiner_, level_, uvs.empty() ? nullptr : uvs.data(),
+                      elementOfVertex_.empty() ? nullptr : &elementOfVertex_);
+    bindVertices();
 }
 
 bool ViewedSurface::adapt(const render::ViewSettings& view, VkExtent2D extent, float pixelsPerSegment) {

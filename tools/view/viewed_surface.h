@@ -3,12 +3,14 @@
 // two-bone skin, and the Renderer that draws it all (docs/viewer.md).
 #pragma once
 
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <quadtri/far/limit_surface.h>
+#include <quadtri/far/limit_table_update.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/far/tessellation.h>
 #include <quadtri/osd/vulkan_buffer.h>
@@ -33,6 +35,11 @@ public:
                  realtime::TableRoute route = realtime::TableRoute::FactorizedLimit);
     // The route the tables took (the panel shows it): the one asked for, or the per-level route
     // where the budget refused the factorized table or at level 0.
+    // The edits (the cage's sharpness and holes) applied in place (Refiner::applyEdits): the
+    // tables and the draw's buffers updated, not rebuilt (docs/edits.md, "In the viewer").
+    // Returns the milliseconds it took. Throws the Refiner's TopologyError for an edit it refuses,
+    // the surface unchanged.
+    double edit(const TagEdits& edits);
     std::string routeDescription() const { return tables_ ? realtime::toString(tables_->route) : ""; }
     bool ready() const { return refiner_ != nullptr; }
 
@@ -65,6 +72,11 @@ public:
     const std::string& skinProblem() const { return skinProblem_; }
 
 private:
+    // The evaluator's outputs given to the renderer (zeros on the host until the first update).
+    void bindVertices();
+    // The level drawn again (its faces, `uvs` and the evaluator's buffers), the adaptive
+    // tessellation let go.
+    void present(const std::vector<float>& uvs);
     // The posed cage with the selection's colours.
     void showCage(const std::vector<std::pair<int, int>>& selectedEdges, const std::vector<int>& selectedVertices);
 
@@ -73,6 +85,9 @@ private:
     std::unique_ptr<Refiner> refiner_;
     std::unique_ptr<realtime::SurfaceTables> tables_;
     std::unique_ptr<realtime::FrameEvaluator> evaluator_;
+    std::unique_ptr<LimitTableUpdate> limitUpdate_;  // taken from pendingLimitUpdate_ at the first edit
+    std::future<std::unique_ptr<LimitTableUpdate>> pendingLimitUpdate_;  // made after refiner_: goes first
+    std::vector<float> controlUVs_;
     std::optional<realtime::TwoBoneSkin> skin_;
     std::string skinProblem_;
     std::vector<float> rest_, cage_;

@@ -207,7 +207,32 @@ void Viewer::frameMesh() {
     view_.sceneRadius = 1.5f * sphere.radius;
 }
 
+void Viewer::editSelection(float sharpness) {
+    document_.setSelectionSharpness(sharpness);
+    sharpness = std::min(sharpness, kInfiniteSharpness);  // as the document keeps it
+    for (const auto& [a, b] : document_.selectedEdges()) pendingEdits_.setCrease(a, b, sharpness);
+    for (int v : document_.selectedVertices()) pendingEdits_.setCorner(v, sharpness);
+}
+
+void Viewer::applyEdits() {
+    if (pendingEdits_.empty()) return;
+    if (!needsRebuild_) {  // a rebuild reads the document, edits and all
+        double ms = 0.0;
+        try {
+            for (const auto& surface : surfaces_) ms += surface->edit(pendingEdits_);
+            editMs_ = ms;
+        } catch (const VulkanError&) {
+            throw;  // the device: not something a rebuild can fix
+        } catch (const std::exception&) {
+            needsRebuild_ = true;  // the document's tags go through the descriptor's rules instead
+        }
+        needsUpdate_ = true;
+    }
+    pendingEdits_.clear();
+}
+
 void Viewer::rebuild() {
+    applyEdits();
     if (!needsRebuild_) return;
     const std::size_t count = std::size_t(viewportCount());
     const bool reframe = !surfaces_.empty() && surfaces_.size() != count;  // the viewports' shape changed

@@ -69,6 +69,10 @@ private:
     // A PNG or JPEG for textured shading; a failure shows in message_ and keeps the old one.
     void loadTexture(const std::string& path);
     void runCommand(const ScriptCommand& command, const std::string& script);
+    // The selection's sharpness set in the document and queued as an edit of the surfaces.
+    void editSelection(float sharpness);
+    // The queued edits applied to every surface in place (a surface that refuses one is rebuilt).
+    void applyEdits();
 
     // Declared in the order of creation: each goes before what it was made from.
     ViewerArgs args_;
@@ -92,6 +96,8 @@ private:
     double lastFrameTime_ = 0.0;
     realtime::PhaseTimes times_;
     double drawMs_ = 0.0;
+    TagEdits pendingEdits_;  // made since the last frame
+    double editMs_ = -1.0;   // the last edit's update of the surfaces, -1 before any
 
     // Mouse: a drag rotates (left) or pans (right, middle); a left click without a drag picks.
     bool dragging_ = false;

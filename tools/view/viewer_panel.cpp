@@ -143,10 +143,7 @@ void Viewer::drawSelectionPanel() {
         bool changed = false;
         if (!infinite) changed |= ImGui::SliderFloat("Sharpness", &s, 0.0f, 9.99f, "%.2f");
         changed |= ImGui::Checkbox("Infinite", &infinite);
-        if (changed) {
-            document_.setSelectionSharpness(infinite ? kInfiniteSharpness : std::min(s, 9.99f));
-            needsRebuild_ = true;
-        }
+        if (changed) editSelection(infinite ? kInfiniteSharpness : std::min(s, 9.99f));
         if (ImGui::Button("Clear selection")) {
             document_.clearSelection();
             needsUpdate_ = true;
@@ -176,6 +173,7 @@ void Viewer::drawTimings() {
     ImGui::Text("evaluate %7.2f ms", times_.evaluateMs);
     ImGui::Text("normals  %7.2f ms", times_.normalsMs);
     ImGui::Text("draw     %7.2f ms", drawMs_);
+    if (editMs_ >= 0.0) ImGui::Text("edit     %7.2f ms (the last sharpness change)", editMs_);
     ImGui::Text("%.1f fps", double(ImGui::GetIO().Framerate));
     ImGui::TextDisabled("Vulkan device: %s", gpu_->deviceName().c_str());
 }

@@ -60,8 +60,7 @@ void Viewer::runCommand(const ScriptCommand& command, const std::string& script)
             break;
         case ScriptVerb::Sharpness:
             if (!document_.hasSelection()) throw ScriptError(where + "'sharpness' with nothing selected");
-            document_.setSelectionSharpness(std::isinf(command.numbers[0]) ? kInfiniteSharpness : float(command.numbers[0]));
-            needsRebuild_ = true;
+            editSelection(std::isinf(command.numbers[0]) ? kInfiniteSharpness : float(command.numbers[0]));
             break;
         case ScriptVerb::Level: choices_.level = int(command.numbers[0]); needsRebuild_ = true; break;
         case ScriptVerb::Scheme: choices_.scheme = namedOrFail(allSchemes(), w[0], where, "scheme"); needsRebuild_ = true; break;
