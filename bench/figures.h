@@ -137,7 +137,7 @@ struct CaseResult {
 };
 
 // One way to tessellate a whole cage at a uniform rate: points, unit normals and triangles,
-// serial (bench/tessellation_case.h).
+// serial (bench/quadtri/tessellation_case.h).
 struct TessellationWay {
     std::string library;  // "quadtri" or "opensubdiv"
     // quadtri: "tessellation" (Tessellation + LimitSurface::stencilTable + EvalLimitStencils);
@@ -159,6 +159,27 @@ struct TessellationCaseResult {
     std::vector<TessellationWay> ways;
 };
 
+// One edit of a cage's tags (bench/edit_case.h): applied in place against the same tables built
+// again, and OpenSubdiv's rebuild of its tables for the edited cage.
+struct EditCaseResult {
+    std::string mesh;
+    std::string scheme;
+    int level = 0;
+    std::string edit;          // "edge", "edge_loop" (ten edges), "corner", "hole"
+    int points = 0;            // stencils of the factorized limit table (level N's vertices)
+    int stencilsWritten = 0;   // of that table, by the update (the last repetition's)
+    Timing updateMs;           // Refiner::applyEdits + LimitTableUpdate::update, all threads
+    Timing rebuildMs;          // Refiner + refineUniform(N) + factorizedLimitStencils(N), all threads
+    // The largest distance between a limit point of the updated table and the rebuilt one's on the
+    // cage, over the bounding-box diagonal.
+    double maxDifference = 0;
+    // OpenSubdiv (Catmark or Loop on the same cage, where it has the scheme: its rebuild is what a
+    // user of it pays for any scheme): refiner + RefineUniform(N) + factorized StencilTable, and
+    // refiner + RefineAdaptive(2) + LimitStencilTable at the level's points, serial.
+    std::optional<Timing> osdRebuildMs;
+    std::string osdScheme;
+};
+
 struct BenchResult {
     std::string date;           // UTC, ISO 8601
     std::string cpu;            // /proc/cpuinfo's model name
@@ -172,6 +193,7 @@ struct BenchResult {
     std::vector<FrameCaseResult> frameCases;
     std::vector<SurfaceCaseResult> surfaceCases;
     std::vector<TessellationCaseResult> tessellationCases;
+    std::vector<EditCaseResult> editCases;
 };
 
 }  // namespace quadtri::bench

@@ -25,23 +25,24 @@
 
 #include "bench/compare.h"
 #include "bench/figures.h"
-#include "bench/frame_case.h"
-#include "bench/limit_case.h"
+#include "bench/quadtri/edit_case.h"
+#include "bench/quadtri/frame_case.h"
+#include "bench/quadtri/limit_case.h"
 #include "bench/measure/memcpy_bandwidth.h"
 #include "bench/opensubdiv/osd_case.h"
 #include "bench/opensubdiv/osd_frame_case.h"
 #include "bench/opensubdiv/osd_limit_case.h"
 #include "bench/opensubdiv/osd_surface_case.h"
 #include "bench/opensubdiv/osd_tessellation_case.h"
-#include "bench/quadtri_case.h"
+#include "bench/quadtri/quadtri_case.h"
 #include "bench/report.h"
-#include "bench/surface_case.h"
-#include "bench/tessellation_case.h"
+#include "bench/quadtri/surface_case.h"
+#include "bench/quadtri/tessellation_case.h"
 #include "bench/meshes/sphere.h"
 #include "bench/meshes/torus.h"
 #include "tools/obj_io.h"
 #ifdef QUADTRI_BENCH_VULKAN
-#include "bench/vulkan_case.h"
+#include "bench/quadtri/vulkan_case.h"
 #include <quadtri/osd/vulkan_context.h>
 #else
 namespace quadtri {
@@ -156,6 +157,18 @@ std::vector<CaseSpec> surfaceCaseList(bool quick) {
     return cases;
 }
 
+// Edit cases: the limb under schaefer-warren at levels 2-4 and the 100 x 100 quad torus under
+// catmull-clark at level 3, each edited four ways (--quick: the limb at level 2); OpenSubdiv's
+// rebuild under Catmark beside each.
+std::vector<CaseSpec> editCaseList(bool quick) {
+    std::vector<CaseSpec> cases = {{kLimbName, Scheme::SchaeferWarren, OsdScheme::Catmark, 2}};
+    if (quick) return cases;
+    cases.push_back({kLimbName, Scheme::SchaeferWarren, OsdScheme::Catmark, 3});
+    cases.push_back({kLimbName, Scheme::SchaeferWarren, OsdScheme::Catmark, 4});
+    cases.push_back({torusName(100, TorusFaces::Quads), Scheme::CatmullClark, OsdScheme::Catmark, 3});
+    return cases;
+}
+
 // The tessellation cases' rate (--quick: 2): each surface case's cage cut at it.
 constexpr int kTessellationRate = 4;
 
@@ -253,7 +266,7 @@ SurfaceCage surfaceCage(const CaseSpec& spec, const ControlMesh* mesh, const io:
         cage.creaseSharpness = limb->creaseSharpness;
         cage.options = limb->applyTags(options);
         if (!limb->corners.empty() || !limb->holes.empty())
-            throw std::logic_error(spec.mesh + ": the surface cases take creases only");
+            throw std::logic_error(spec.mesh + ": the bench's cages take creases only");
     } else {
         cage.mesh = *mesh;
         cage.options = options;
@@ -384,19 +397,23 @@ std::string cpuModel() {
 
 int usage(const char* message) {
     if (message) std::cerr << "quadtri-bench: " << message << "\n";
-    std::cerr << "usage: quadtri-bench [--quick] [--limit | --frame | --surface] [--json FILE] [--mesh NAME] [--keep-freed-memory]\n"
+    std::cerr << "usage: quadtri-bench [--quick] [--limit | --frame | --surface | --edit] [--json FILE] [--mesh NAME]\n"
+                 "                     [--keep-freed-memory]\n"
                  "  --quick      CI-sized run: 100x100 tori at levels 2-3 (their limit and frames at 2),\n"
                  "               the 2000-segment spheres at level 1, 3 repetitions\n"
                  "  --limit      only the limit cases (limit positions + normals, mesh normals)\n"
                  "  --frame      only the frame cases (skin + level N's limit positions and normals)\n"
                  "  --surface    only the surface and tessellation cases (points at random (u, v) on every\n"
                  "               face, and every face at rate 4, against Bfr)\n"
+                 "  --edit       only the edit cases (an edge, ten edges, a corner, a hole changed in place\n"
+                 "               against the tables built again, and OpenSubdiv's rebuild)\n"
                  "  --json FILE  also write the figures as JSON to FILE\n"
                  "  --mesh NAME  only the cases of one mesh (torus100_quad, torus100_tri, torus320_quad,\n"
                  "               torus320_tri, torus100_mixed, sphere2000x8_mixed, sphere2000x8_quad,\n"
                  "               torus1000_quad;\n"
                  "               frames: torus100_quad, torus71_tri, mixed_limb;\n"
-                 "               surfaces: mixed_limb, torus100_quad, torus71_tri), e.g. to profile it\n"
+                 "               surfaces: mixed_limb, torus100_quad, torus71_tri; edits: mixed_limb,\n"
+                 "               torus100_quad), e.g. to profile it\n"
                  "  --keep-freed-memory  glibc keeps what both libraries free for their next builds\n"
                  "               (mallopt: blocks up to 256 MiB from its heap, 1 GiB of free heap kept),\n"
                  "               as an engine that rebuilds often may set it (docs/performance.md, Rebuilding often)\n";
@@ -404,7 +421,7 @@ int usage(const char* message) {
 }
 
 int run(int argc, char** argv) {
-    bool quick = false, limitOnly = false, frameOnly = false, surfaceOnly = false, keepFreed = false;
+    bool quick = false, limitOnly = false, frameOnly = false, surfaceOnly = false, editOnly = false, keepFreed = false;
     std::string jsonPath, onlyMesh;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) quick = true;
@@ -413,12 +430,13 @@ int run(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--limit")) limitOnly = true;
         else if (!std::strcmp(argv[i], "--frame")) frameOnly = true;
         else if (!std::strcmp(argv[i], "--surface")) surfaceOnly = true;
+        else if (!std::strcmp(argv[i], "--edit")) editOnly = true;
         else if (!std::strcmp(argv[i], "--keep-freed-memory")) keepFreed = true;
         else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return usage(nullptr);
         else return usage((std::string("unknown argument ") + argv[i]).c_str());
     }
-    if (int(limitOnly) + int(frameOnly) + int(surfaceOnly) > 1)
-        return usage("--limit, --frame and --surface exclude each other");
+    if (int(limitOnly) + int(frameOnly) + int(surfaceOnly) + int(editOnly) > 1)
+        return usage("--limit, --frame, --surface and --edit exclude each other");
     if (keepFreed) {
 #ifdef __GLIBC__
         // Set before the cases allocate. By default glibc maps blocks past its (adjusting)
@@ -462,12 +480,13 @@ int run(int argc, char** argv) {
                        list.end());
         return list;
     };
-    const bool all = !limitOnly && !frameOnly && !surfaceOnly;
+    const bool all = !limitOnly && !frameOnly && !surfaceOnly && !editOnly;
     const std::vector<CaseSpec> frames = ofMesh(all || frameOnly ? frameCaseList(quick) : std::vector<CaseSpec>{});
     const std::vector<CaseSpec> cases = ofMesh(all ? caseList(quick) : std::vector<CaseSpec>{});
     const std::vector<CaseSpec> limits = ofMesh(all || limitOnly ? limitCaseList(quick) : std::vector<CaseSpec>{});
     const std::vector<CaseSpec> surfaces = ofMesh(all || surfaceOnly ? surfaceCaseList(quick) : std::vector<CaseSpec>{});
-    if (frames.empty() && cases.empty() && limits.empty() && surfaces.empty())
+    const std::vector<CaseSpec> edits = ofMesh(all || editOnly ? editCaseList(quick) : std::vector<CaseSpec>{});
+    if (frames.empty() && cases.empty() && limits.empty() && surfaces.empty() && edits.empty())
         return usage(("no case has the mesh " + onlyMesh).c_str());
 
     std::map<std::string, ControlMesh> meshes;
@@ -512,6 +531,18 @@ int run(int argc, char** argv) {
         std::cerr << "[tessellation " << i + 1 << "/" << surfaces.size() << "] " << spec.mesh << " " << schemeName(spec)
                   << "\n";
         result.tessellationCases.push_back(runTessellationCase(spec, cage, quick ? 2 : kTessellationRate, reps));
+    }
+
+    for (size_t i = 0; i < edits.size(); ++i) {
+        const CaseSpec& spec = edits[i];
+        const bool isLimb = spec.mesh == kLimbName;
+        if (isLimb && !limb) limb = io::readObj(std::string(QUADTRI_BENCH_DATA_DIR) + "/mixed_limb.obj");
+        const SurfaceCage cage = surfaceCage(spec, isLimb ? nullptr : &meshOf(spec.mesh), isLimb ? &*limb : nullptr);
+        for (EditKind kind : {EditKind::Edge, EditKind::EdgeLoop, EditKind::Corner, EditKind::Hole}) {
+            std::cerr << "[edit " << i + 1 << "/" << edits.size() << "] " << spec.mesh << " level " << spec.level << " "
+                      << toString(kind) << "\n";
+            result.editCases.push_back(runEditCase(cage, toString(spec.scheme), spec.level, kind, reps, spec.osd));
+        }
     }
 
     printMarkdown(std::cout, result);

@@ -271,6 +271,21 @@ def tessellation_table(r):
     return rows
 
 
+def edit_table(r):
+    rows = ["| mesh | scheme | L | edit | points | stencils written | update ms | rebuild ms | rebuild / update |"
+            " max difference | OSD rebuild ms | OSD / update |",
+            "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for c in r.get("edit_cases", []):
+        osd = c.get("osd_rebuild_ms")
+        rows.append(
+            f"| {c['mesh']} | {c['scheme']} | {c['level']} | {c['edit'].replace('_', ' ')} | {c['points']} | "
+            f"{c['stencils_written']} | {timing(c['update_ms'])} | {timing(c['rebuild_ms'])} | "
+            f"{ratio(median(c['rebuild_ms']), median(c['update_ms']))} | {c['max_difference']:.1e} | "
+            f"{timing(osd) + ' (' + c['osd_scheme'] + ')' if osd else '–'} | "
+            f"{ratio(median(osd), median(c['update_ms'])) if osd else '–'} |")
+    return rows
+
+
 def summary(r):
     """Ratio ranges at levels >= 3 (all levels where no case reaches 3)."""
     osd_cases = [c for c in r["cases"] if c["osd"]]
@@ -475,6 +490,17 @@ def section(r, note):
                   " triangles' points and normals again (Bfr keeps each face's `Surface`). The two tessellations'"
                   " areas are checked to agree within 1e-3 first:", ""]
         lines += tessellation_table(r)
+    if r.get("edit_cases"):
+        lines += ["", "Edits in place ([edits.md](edits.md)): one edit of the cage's tags (an interior edge to"
+                  " sharpness 2.5, ten edges along a quad loop, an interior vertex's corner, a face made a hole)"
+                  " through `Refiner::applyEdits` and `LimitTableUpdate` of the frame's factorized limit table, all"
+                  " threads, each repetition from the unedited cage; rebuild: the `Refiner`, `refineUniform(N)` and"
+                  " `factorizedLimitStencils(N)` built again from the edited cage; max difference: the farthest limit"
+                  " point of the updated table from the rebuilt one's, of the bounding-box diagonal. OpenSubdiv has no"
+                  " edit in place: its rebuild (serial, under Catmark, the scheme it has for these cages) is a"
+                  " `TopologyRefiner` with `RefineUniform(N)` and a factorized `StencilTable`, and one refined"
+                  " adaptively (isolation 2) with its `LimitStencilTable` at the level's points:", ""]
+        lines += edit_table(r)
     lines += ["", END]
     return "\n".join(lines) + "\n"
 

@@ -36,7 +36,8 @@ expect("${doc1}" "${OUT_DOC}"
        "| torus100_quad | stam-loop/catmark | 2 |" "**The whole frame**"
        "| torus100_quad | catmull-clark/catmark | 2 | 10000 | 160000 | TbbEvaluator"
        "| mixed_limb | schaefer-warren | 2 | 9984 |"
-       "| mixed_limb | catmull-clark/catmark | 2 | opensubdiv `bfr_tessellation` |")
+       "| mixed_limb | catmull-clark/catmark | 2 | opensubdiv `bfr_tessellation` |"
+       "| mixed_limb | schaefer-warren | 2 | edge | 129026 |")
 expect("${readme1}" "${OUT_README}"
        "<!-- performance-headline:begin" "<!-- performance-headline:end -->" "with `quadtri-bench --quick --json"
        "| measured | quadtri | against" "| Whole frame: `mixed_limb` (9984 faces, schaefer-warren)"

@@ -333,6 +333,29 @@ void printTessellationMarkdown(std::ostream& out, const std::vector<Tessellation
     }
 }
 
+void writeEditCaseJson(std::ostream& f, const EditCaseResult& c) {
+    f << "    {\"mesh\": " << jsonString(c.mesh) << ", \"scheme\": " << jsonString(c.scheme) << ", \"level\": " << c.level
+      << ", \"edit\": " << jsonString(c.edit) << ", \"points\": " << c.points << ", \"stencils_written\": " << c.stencilsWritten
+      << ",\n     \"update_ms\": " << json(c.updateMs) << ", \"rebuild_ms\": " << json(c.rebuildMs)
+      << ", \"max_difference\": " << number(c.maxDifference) << ",\n     \"osd_scheme\": "
+      << (c.osdScheme.empty() ? "null" : jsonString(c.osdScheme)) << ", \"osd_rebuild_ms\": " << json(c.osdRebuildMs) << "}";
+}
+
+// Per edit: the update, the rebuild and OpenSubdiv's rebuild, and how many times faster.
+void printEditMarkdown(std::ostream& out, const std::vector<EditCaseResult>& cases) {
+    if (cases.empty()) return;
+    out << "\nEdits in place (Refiner::applyEdits + LimitTableUpdate of the factorized limit table) against the same"
+           " tables built again, all threads; OpenSubdiv's rebuild serial\n\n"
+        << "| mesh | scheme | L | edit | points | written | update ms | rebuild ms | × | max difference | OSD rebuild ms"
+           " | × OSD |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const EditCaseResult& c : cases)
+        out << "| " << c.mesh << " | " << c.scheme << " | " << c.level << " | " << c.edit << " | " << c.points << " | "
+            << c.stencilsWritten << " | " << ms(c.updateMs.median) << " | " << ms(c.rebuildMs.median) << " | "
+            << ratio(c.rebuildMs.median, c.updateMs.median) << " | " << number(c.maxDifference, "%.1e") << " | "
+            << ms(c.osdRebuildMs) << " | " << (c.osdRebuildMs ? ratio(c.osdRebuildMs->median, c.updateMs.median) : "–")
+            << " |\n";
+}
+
 }  // namespace
 
 void writeJson(const std::string& path, const BenchResult& r) {
@@ -367,6 +390,11 @@ void writeJson(const std::string& path, const BenchResult& r) {
         f << (i ? ",\n" : "\n");
         writeTessellationCaseJson(f, r.tessellationCases[i]);
     }
+    f << "\n  ],\n  \"edit_cases\": [";
+    for (std::size_t i = 0; i < r.editCases.size(); ++i) {
+        f << (i ? ",\n" : "\n");
+        writeEditCaseJson(f, r.editCases[i]);
+    }
     f << "\n  ]\n}\n";
     if (!f) throw std::runtime_error("cannot write " + path);
 }
@@ -380,6 +408,7 @@ void printMarkdown(std::ostream& out, const BenchResult& r) {
     printLimitMarkdown(out, r.limitCases);
     printSurfaceMarkdown(out, r.surfaceCases);
     printTessellationMarkdown(out, r.tessellationCases);
+    printEditMarkdown(out, r.editCases);
 }
 
 }  // namespace quadtri::bench

@@ -15,6 +15,15 @@ inline namespace v0 {
 
 class Refiner;
 
+// What an update wrote into a limit table.
+struct LimitTableChange {
+    std::vector<int> stencils;  // whose size, run of sources or weights changed, sorted
+    // The pools were laid out again (grown past twice their size): every stencil's offsets may
+    // have changed, and a copy of the table elsewhere must be made again. Otherwise the pools only
+    // grew at their ends, and a copy needs the changed stencils and the pools' new tails.
+    bool poolsLaidOut = false;
+};
+
 class QUADTRI_API LimitTableUpdate {
 public:
     // Which of the Refiner's limit tables of a level is kept up to date.
@@ -36,11 +45,11 @@ public:
     // After `report` = refiner.applyEdits(...): the stencils of `table` (the table this object
     // keeps, as built or updated since) that the edit can change are computed again and written
     // where they differ, their runs of sources and weights appended to the table's pools (laid
-    // out again once grown past twice their size). Returns the stencils written, sorted. The table
+    // out again once grown past twice their size). Returns what it wrote. The table
     // then equals the one the Refiner would build: bit for bit over level L; over the control
     // vertices within float rounding (the Refiner composes regular faces from templates, an update
     // composes directly).
-    std::vector<int> update(const EditReport& report, LimitStencilTable& table);
+    LimitTableChange update(const EditReport& report, LimitStencilTable& table);
 
 private:
     struct State;

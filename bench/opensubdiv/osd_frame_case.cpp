@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bench/frame_case.h"
+#include "bench/quadtri/frame_case.h"
 #include "bench/measure/timing.h"
 
 namespace quadtri::bench {

@@ -2,7 +2,7 @@
 // positions and unit normals (bench/opensubdiv/osd_limit_case.h: a Far::LimitStencilTable with du, dv at the
 // level's vertices, then normalize(du x dv)), applied to the cage as posed every frame by the same
 // realtime::DeformingSurface and two-bone skin as quadtri's side, and timed the same way
-// (bench/frame_case.h's timeFrames), on Osd::CpuEvaluator, Osd::OmpEvaluator (all threads) and
+// (bench/quadtri/frame_case.h's timeFrames), on Osd::CpuEvaluator, Osd::OmpEvaluator (all threads) and
 // Far's UpdateValues + UpdateDerivs.
 #pragma once
 

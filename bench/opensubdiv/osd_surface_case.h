@@ -12,7 +12,7 @@
 
 #include "bench/figures.h"
 #include "bench/opensubdiv/osd_case.h"
-#include "bench/surface_case.h"
+#include "bench/quadtri/surface_case.h"
 
 namespace quadtri::bench {
 

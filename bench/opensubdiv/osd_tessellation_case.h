@@ -1,4 +1,4 @@
-// OpenSubdiv's way to tessellate a whole cage (bench/tessellation_case.h): per face a
+// OpenSubdiv's way to tessellate a whole cage (bench/quadtri/tessellation_case.h): per face a
 // Bfr::Surface from a Bfr::RefinerSurfaceFactory at its default approximation levels, a
 // Bfr::Tessellation at the uniform rate, Surface::Evaluate at each of its coordinates (position
 // and derivatives, then the unit normal) and its triangles offset to the face's first point, as
@@ -7,7 +7,7 @@
 #pragma once
 
 #include "bench/opensubdiv/osd_case.h"
-#include "bench/tessellation_case.h"
+#include "bench/quadtri/tessellation_case.h"
 
 namespace quadtri::bench {
 

@@ -9,8 +9,7 @@
 namespace quadtri::bench {
 
 std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const ControlMesh& mesh, OsdScheme scheme,
-                                                                     const std::vector<int>& creasePairs,
-                                                                     const std::vector<float>& creaseSharpness) {
+                                                                     const OsdTags& tags) {
     namespace Far = OpenSubdiv::Far;
     namespace Sdc = OpenSubdiv::Sdc;
     Far::TopologyDescriptor desc;
@@ -18,9 +17,14 @@ std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const Contr
     desc.numFaces = mesh.numFaces();
     desc.numVertsPerFace = mesh.faceSizes.data();
     desc.vertIndicesPerFace = mesh.faceVerts.data();
-    desc.numCreases = int(creaseSharpness.size());
-    desc.creaseVertexIndexPairs = creasePairs.data();
-    desc.creaseWeights = creaseSharpness.data();
+    desc.numCreases = int(tags.creaseSharpness.size());
+    desc.creaseVertexIndexPairs = tags.creasePairs.data();
+    desc.creaseWeights = tags.creaseSharpness.data();
+    desc.numCorners = int(tags.cornerSharpness.size());
+    desc.cornerVertexIndices = tags.corners.data();
+    desc.cornerWeights = tags.cornerSharpness.data();
+    desc.numHoles = int(tags.holes.size());
+    desc.holeIndices = tags.holes.data();
     Sdc::Options sdc;
     sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
     using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;

@@ -12,10 +12,21 @@
 
 namespace quadtri::bench {
 
-// Unrefined, with the given creases (2 vertices and a sharpness each); std::runtime_error naming
-// the mesh if OpenSubdiv refuses its topology.
+// Unrefined, with the given creases (2 vertices and a sharpness each), corners and holes;
+// std::runtime_error naming the mesh if OpenSubdiv refuses its topology.
+struct OsdTags {
+    std::vector<int> creasePairs;
+    std::vector<float> creaseSharpness;
+    std::vector<int> corners;
+    std::vector<float> cornerSharpness;
+    std::vector<int> holes;
+};
 std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const ControlMesh& mesh, OsdScheme scheme,
-                                                                     const std::vector<int>& creasePairs = {},
-                                                                     const std::vector<float>& creaseSharpness = {});
+                                                                     const OsdTags& tags);
+inline std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> osdTopologyRefiner(const ControlMesh& mesh, OsdScheme scheme,
+                                                                            const std::vector<int>& creasePairs = {},
+                                                                            const std::vector<float>& creaseSharpness = {}) {
+    return osdTopologyRefiner(mesh, scheme, OsdTags{creasePairs, creaseSharpness, {}, {}, {}});
+}
 
 }  // namespace quadtri::bench

@@ -160,7 +160,7 @@ LimitTableUpdate::~LimitTableUpdate() = default;
 LimitTableUpdate::LimitTableUpdate(LimitTableUpdate&&) noexcept = default;
 LimitTableUpdate& LimitTableUpdate::operator=(LimitTableUpdate&&) noexcept = default;
 
-std::vector<int> LimitTableUpdate::update(const EditReport& report, LimitStencilTable& table) {
+LimitTableChange LimitTableUpdate::update(const EditReport& report, LimitStencilTable& table) {
     State& s = *state_;
     const int N = s.level;
     if (int(report.levels.size()) <= N)
@@ -173,7 +173,9 @@ std::vector<int> LimitTableUpdate::update(const EditReport& report, LimitStencil
     if (s.sources == Sources::Level) {
         if (near.empty()) return {};
         const LimitStencilTable fresh = toFloatTable(buildLimitStencilsOf(t, options, &s.starts, near, s.cache));
-        return spliceLimitStencils(table, near, fresh, s.marks);
+        LimitTableChange change;
+        change.stencils = spliceLimitStencils(table, near, fresh, s.marks, &change.poolsLaidOut);
+        return change;
     }
 
     std::vector<int> rows;
@@ -208,7 +210,9 @@ std::vector<int> LimitTableUpdate::update(const EditReport& report, LimitStencil
     for (int& i : limit.indices) i = int(std::lower_bound(sources.begin(), sources.end(), i) - sources.begin());
     limit.numSourceVertices = int(sources.size());
     const LimitStencilTable fresh = composeLimitStencilsToFloat(limit, inner);
-    return spliceLimitStencils(table, rows, fresh, s.marks);
+    LimitTableChange change;
+    change.stencils = spliceLimitStencils(table, rows, fresh, s.marks, &change.poolsLaidOut);
+    return change;
 }
 
 }  // namespace v0

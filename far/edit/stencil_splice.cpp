@@ -60,7 +60,8 @@ void compactPools(LimitStencilTable& table) {
 }
 
 std::vector<int> spliceLimitStencils(LimitStencilTable& table, const std::vector<int>& rows,
-                                     const LimitStencilTable& fresh, LimitPoolMarks& marks) {
+                                     const LimitStencilTable& fresh, LimitPoolMarks& marks, bool* laidOut) {
+    if (laidOut) *laidOut = false;
     if (marks.indices == 0 && marks.weights == 0) marks = {table.indices.size(), table.weights.size()};
     std::vector<int> changed;
     IndexPool runs;
@@ -84,6 +85,7 @@ std::vector<int> spliceLimitStencils(LimitStencilTable& table, const std::vector
     if (table.indices.size() > 2 * marks.indices + 4096 || table.weights.size() > 2 * marks.weights + 4096) {
         compactPools(table);
         marks = {table.indices.size(), table.weights.size()};
+        if (laidOut) *laidOut = true;
     }
     return changed;
 }

@@ -32,8 +32,9 @@ void compactWeights(StencilTable& table);
 struct LimitPoolMarks {
     std::size_t indices = 0, weights = 0;
 };
+// Returns the rows changed; `laidOut` says whether the pools were laid out again.
 std::vector<int> spliceLimitStencils(LimitStencilTable& table, const std::vector<int>& rows,
-                                     const LimitStencilTable& fresh, LimitPoolMarks& marks);
+                                     const LimitStencilTable& fresh, LimitPoolMarks& marks, bool* laidOut = nullptr);
 
 // Both pools laid out again in stencil order, each sequence once: what a build makes.
 void compactPools(LimitStencilTable& table);

@@ -9,6 +9,7 @@
 #include <quadtri/export.h>
 #include <quadtri/far/level_patch_table.h>
 #include <quadtri/far/limit_stencil_table.h>
+#include <quadtri/far/limit_table_update.h>
 #include <quadtri/far/mesh_normal_table.h>
 #include <quadtri/osd/vulkan_context.h>
 #include <quadtri/osd/vulkan_stencil_table.h>
@@ -21,10 +22,23 @@ class QUADTRI_API VulkanLimitStencilTable : public VulkanPooledTable {
 public:
     // Copies the table's five arrays through one staging buffer (waits); std::invalid_argument
     // when they are inconsistent (a run or a weight triple outside its pool included).
-    VulkanLimitStencilTable(VulkanContext& ctx, const LimitStencilTable& table)
+    // `updatable`: the pools get room for what LimitTableUpdate appends (half their size again, at
+    // least 16 384 elements each), so that update() can write an edit's changes by range.
+    VulkanLimitStencilTable(VulkanContext& ctx, const LimitStencilTable& table, bool updatable = false)
         : VulkanPooledTable(ctx, {table.numSourceVertices, &table.sizes, table.offsets, table.indices,
-                                   table.weightOffsets, table.weights, 3},
+                                   table.weightOffsets, table.weights, 3, updatable},
                              "LimitStencilTable") {}
+
+    // After `change` = LimitTableUpdate::update(..., table) on the host table this copy was made
+    // from (or last updated from), made with `updatable`: the changed stencils' sizes, offsets and
+    // weight offsets and the pools' new ends uploaded (waits). False, with nothing changed, where
+    // the table must be copied again instead (the pools laid out again or past their room).
+    bool update(VulkanContext& ctx, const LimitStencilTable& table, const LimitTableChange& change) {
+        if (change.poolsLaidOut) return false;
+        return updateStencils(ctx, {table.numSourceVertices, &table.sizes, table.offsets, table.indices,
+                                    table.weightOffsets, table.weights, 3, true},
+                              change.stencils);
+    }
 
     using VulkanPooledTable::sizes;
 };

@@ -1,6 +1,8 @@
 #include <quadtri/osd/vulkan_stencil_table.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -36,7 +38,15 @@ struct VulkanPooledTable::Buffers {
     int numStencils, numSourceVertices;
     detail::DeviceBuffer sizes, offsets, indices, weightOffsets, weights;
     detail::TexelView indexTexels, weightTexels;
+    // Elements of each pool on the device, and the room its buffer has.
+    std::size_t indicesUsed = 0, weightsUsed = 0, indicesRoom = 0, weightsRoom = 0;
 };
+
+namespace {
+
+std::size_t roomFor(std::size_t used, bool roomToGrow) { return roomToGrow ? used + std::max<std::size_t>(used / 2, 16384) : used; }
+
+}  // namespace
 
 VulkanPooledTable::VulkanPooledTable(VulkanContext& ctx, const HostArrays& a, const char* table)
     : buffers_(new Buffers{ctx.device(), int(a.weightOffsets.size()), a.numSourceVertices, {}, {}, {}, {}, {}, {}, {}}) {
@@ -45,24 +55,63 @@ VulkanPooledTable::VulkanPooledTable(VulkanContext& ctx, const HostArrays& a, co
     constexpr VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     constexpr VkMemoryPropertyFlags local = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
     constexpr VkBufferUsageFlags pool = usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
-    auto add = [&](detail::DeviceBuffer& to, const void* data, std::size_t bytes, std::vector<detail::CopyRegion>& regions) {
-        to = detail::DeviceBuffer(ctx, bytes, &to == &b.indices || &to == &b.weights ? pool : usage, local);
+    auto add = [&](detail::DeviceBuffer& to, const void* data, std::size_t bytes, std::vector<detail::CopyRegion>& regions,
+                   std::size_t room) {
+        to = detail::DeviceBuffer(ctx, std::max(bytes, room), &to == &b.indices || &to == &b.weights ? pool : usage, local);
         regions.push_back({to.buffer(), 0, data, nullptr, bytes});
     };
+    b.indicesUsed = a.indices.size(), b.weightsUsed = a.weights.size();
+    b.indicesRoom = roomFor(b.indicesUsed, a.roomToGrow), b.weightsRoom = roomFor(b.weightsUsed, a.roomToGrow);
     std::vector<detail::CopyRegion> regions;
-    if (a.sizes) add(b.sizes, a.sizes->data(), a.sizes->size() * sizeof(int), regions);
-    add(b.offsets, a.offsets.data(), a.offsets.size() * sizeof(int), regions);
-    add(b.indices, a.indices.data(), a.indices.size() * sizeof(int), regions);
-    add(b.weightOffsets, a.weightOffsets.data(), a.weightOffsets.size() * sizeof(int), regions);
-    add(b.weights, a.weights.data(), a.weights.size() * sizeof(float), regions);
+    if (a.sizes) add(b.sizes, a.sizes->data(), a.sizes->size() * sizeof(int), regions, 0);
+    add(b.offsets, a.offsets.data(), a.offsets.size() * sizeof(int), regions, 0);
+    add(b.indices, a.indices.data(), a.indices.size() * sizeof(int), regions, b.indicesRoom * sizeof(int));
+    add(b.weightOffsets, a.weightOffsets.data(), a.weightOffsets.size() * sizeof(int), regions, 0);
+    add(b.weights, a.weights.data(), a.weights.size() * sizeof(float), regions, b.weightsRoom * sizeof(float));
     detail::upload(ctx, regions);
     // Texel views only where the device's limit allows them: the shaders read the storage
     // buffers otherwise.
     const std::size_t texels = ctx.texelBufferLimit();
-    if (a.indices.size() <= texels && a.weights.size() <= texels) {
+    if (b.indicesRoom <= texels && b.weightsRoom <= texels) {
         b.indexTexels = detail::TexelView(ctx, b.indices, VK_FORMAT_R32_SINT);
         b.weightTexels = detail::TexelView(ctx, b.weights, VK_FORMAT_R32_SFLOAT);
     }
+}
+
+bool VulkanPooledTable::updateStencils(VulkanContext& ctx, const HostArrays& a, const std::vector<int>& stencils) {
+    if (!buffers_ || !a.sizes) return false;
+    Buffers& b = *buffers_;
+    if (int(a.weightOffsets.size()) != b.numStencils || a.sizes->size() != a.weightOffsets.size() ||
+        a.offsets.size() != a.weightOffsets.size() || a.indices.size() < b.indicesUsed ||
+        a.weights.size() < b.weightsUsed || a.indices.size() > b.indicesRoom || a.weights.size() > b.weightsRoom)
+        return false;
+    for (int i : stencils) {
+        if (i < 0 || i >= b.numStencils) throw std::invalid_argument("VulkanPooledTable: stencil " + std::to_string(i) + " out of range");
+        const std::int64_t first = a.offsets[std::size_t(i)], size = (*a.sizes)[std::size_t(i)],
+                           weights = a.weightOffsets[std::size_t(i)];
+        if (first < 0 || size < 0 || first + size > std::int64_t(a.indices.size()) || weights < 0 ||
+            weights + a.weightsPerEntry * size > std::int64_t(a.weights.size()))
+            throw std::invalid_argument("VulkanPooledTable: stencil " + std::to_string(i) + " reaches outside its arrays");
+    }
+    std::vector<detail::CopyRegion> regions;
+    auto tail = [&](const detail::DeviceBuffer& to, const void* data, std::size_t from, std::size_t to_, std::size_t size) {
+        if (to_ > from) regions.push_back({to.buffer(), from * size, static_cast<const char*>(data) + from * size, nullptr, (to_ - from) * size});
+    };
+    tail(b.indices, a.indices.data(), b.indicesUsed, a.indices.size(), sizeof(int));
+    tail(b.weights, a.weights.data(), b.weightsUsed, a.weights.size(), sizeof(float));
+    // Each run of consecutive stencils in one region per array.
+    for (std::size_t k = 0; k < stencils.size();) {
+        std::size_t end = k + 1;
+        while (end < stencils.size() && stencils[end] == stencils[end - 1] + 1) ++end;
+        const std::size_t first = std::size_t(stencils[k]), count = std::size_t(stencils[end - 1]) - first + 1;
+        for (auto [buffer, array] : {std::pair{&b.sizes, a.sizes}, std::pair{&b.offsets, &a.offsets},
+                                     std::pair{&b.weightOffsets, &a.weightOffsets}})
+            regions.push_back({buffer->buffer(), first * sizeof(int), array->data() + first, nullptr, count * sizeof(int)});
+        k = end;
+    }
+    if (!regions.empty()) detail::upload(ctx, regions);
+    b.indicesUsed = a.indices.size(), b.weightsUsed = a.weights.size();
+    return true;
 }
 
 // A moved-from table reads as an empty one.

@@ -48,6 +48,9 @@ protected:
         const std::vector<int>& weightOffsets;
         const std::vector<float>& weights;
         int weightsPerEntry;
+        // Room in the pools' buffers for what updateStencils appends: half their size again, at
+        // least 16 384 elements each.
+        bool roomToGrow = false;
     };
     // Copies the arrays through one staging buffer (waits); std::invalid_argument naming `table`
     // ("StencilTable") when they are inconsistent: arrays of the wrong lengths, or a stencil whose
@@ -55,6 +58,13 @@ protected:
     VulkanPooledTable(VulkanContext& ctx, const HostArrays& arrays, const char* table);
     // The per-stencil sizes (VK_NULL_HANDLE for a CSR table).
     VkBuffer sizes() const;
+    // For a table with sizes made with roomToGrow: `stencils` (sorted) written again from
+    // `arrays`, the host table as changed since this copy was made or last updated, its pools
+    // only grown at their ends; and the pools' new ends (waits). False, with nothing changed,
+    // where that is not so (the pools shrank, or outgrew their room, or the stencil count
+    // changed): make a new copy then. std::invalid_argument where a written stencil reaches
+    // outside the arrays.
+    bool updateStencils(VulkanContext& ctx, const HostArrays& arrays, const std::vector<int>& stencils);
 
 private:
     struct Buffers;

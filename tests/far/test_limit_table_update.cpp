@@ -86,7 +86,7 @@ TEST(LimitTableUpdate, EqualsTheRefinersTablesOnEveryMeshAndScheme) {
                 for (int trial = 0; trial < 2; ++trial) {
                     const LimitStencilTable before = table;
                     const EditReport report = refiner->applyEdits(randomEdits(refiner->level(0), random, holes));
-                    const std::vector<int> written = update.update(report, table);
+                    const std::vector<int> written = update.update(report, table).stencils;
                     expectUpToDate(*refiner, levels, sources, table, before, written,
                                    name + ", " + toString(scheme) +
                                        (sources == Sources::Level ? ", level" : ", control") + ", edit " +
@@ -111,7 +111,7 @@ TEST(LimitTableUpdate, AHundredEditsInARowKeepTheTablesUpToDate) {
         for (int k = 1; k <= 100; ++k) {
             const EditReport report = refiner->applyEdits(randomEdits(refiner->level(0), random, true));
             const LimitStencilTable beforeLevel = overLevel, beforeControl = overControl;
-            const std::vector<int> a = level.update(report, overLevel), b = control.update(report, overControl);
+            const std::vector<int> a = level.update(report, overLevel).stencils, b = control.update(report, overControl).stencils;
             if (k % 20 != 0) continue;
             const std::string where = std::string(name) + ", edit " + std::to_string(k);
             expectUpToDate(*refiner, 2, Sources::Level, overLevel, beforeLevel, a, where);

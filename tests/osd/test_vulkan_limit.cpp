@@ -8,15 +8,18 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <random>
 #include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <quadtri/far/limit_table_update.h>
 #include <quadtri/far/refiner.h>
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/vulkan_limit_evaluator.h>
 #include "bench/meshes/torus.h"
+#include "tests/far/edit_support.h"
 #include "tests/limit/limit_test_tables.h"
 #include "tests/test_support.h"
 #include "tests/osd/vulkan_test_support.h"
@@ -226,6 +229,50 @@ TEST_F(VulkanTest, LimitRecordedIntoOneSharedBuffer) {
 
 // The device reads whatever the table's arrays say: a table whose arrays disagree, or whose run
 // or weights reach past their pool, is refused on upload.
+// A table kept up to date with edits (LimitTableUpdate) and its device copy updated by range
+// (VulkanLimitStencilTable::update): the device evaluates what a fresh copy of the host table
+// evaluates, bit for bit, after every tenth of 40 random edits; a copy without room for updates,
+// or after the pools were laid out again, is refused an update and left as it was.
+TEST_F(VulkanTest, ALimitTableUpdatedByRangeEqualsAFreshCopy) {
+    const io::ObjMesh mesh = io::readObj(meshPath("mixed/mixed_torus.obj"));
+    Options options;
+    options.scheme = Scheme::SchaeferWarren;
+    std::unique_ptr<Refiner> refiner = build(mesh, options, 2);
+    LimitStencilTable table = refiner->factorizedLimitStencils(2);
+    LimitTableUpdate update(*refiner, 2, LimitTableUpdate::Sources::Control);
+    VulkanLimitStencilTable device(*ctx, table, true), fixed(*ctx, table);
+    const VulkanVertexBuffer cage = upload(*ctx, mesh.positions, 3);
+    auto evaluate = [&](const VulkanLimitStencilTable& t) {
+        const VulkanVertexBuffer out = upload(*ctx, std::vector<float>(3 * std::size_t(table.numStencils()), 0.0f), 3);
+        VulkanLimitEvaluator eval(*ctx);
+        eval.EvalLimitStencilsAndWait(cage, kPacked, &out, kPacked, nullptr, kPacked, nullptr, kPacked, nullptr, kPacked, t);
+        return downloadFloats(out, 3 * std::size_t(table.numStencils()));
+    };
+    std::mt19937 random(17);
+    int byRange = 0;
+    for (int k = 1; k <= 40; ++k) {
+        const LimitTableChange change = update.update(refiner->applyEdits(randomEdits(refiner->level(0), random, true)), table);
+        if (device.update(*ctx, table, change)) {
+            ++byRange;
+        } else {
+            device = VulkanLimitStencilTable(*ctx, table, true);
+        }
+        if (change.poolsLaidOut) {
+            EXPECT_FALSE(fixed.update(*ctx, table, change));
+        }
+        if (k % 10 == 0) {
+            EXPECT_EQ(evaluate(device), evaluate(VulkanLimitStencilTable(*ctx, table))) << "edit " << k;
+        }
+    }
+    EXPECT_GT(byRange, 30);
+    // A copy without room: refused once its pools would grow, and still what it was.
+    const std::vector<float> before = evaluate(fixed);
+    LimitStencilTable grown = table;
+    grown.indices.push_back(0);
+    EXPECT_FALSE(fixed.update(*ctx, grown, LimitTableChange{}));
+    EXPECT_EQ(evaluate(fixed), before);
+}
+
 TEST_F(VulkanTest, InconsistentLimitTablesAreRefused) {
     const LimitStencilTable good = randomLimitTable(10, 8, 1);
     std::vector<LimitStencilTable> bad(4, good);

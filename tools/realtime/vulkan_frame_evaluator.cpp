@@ -30,11 +30,11 @@ const BufferDescriptor kXyz(0, 3, 3);
 
 }  // namespace
 
-VulkanFrameEvaluator::VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTables& tables)
+VulkanFrameEvaluator::VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTables& tables, bool editable)
     : ctx_(ctx), route_(tables.route), numControl_(tables.numControl), levels_(upload(ctx, tables.levels)),
       levelFirst_(levels_.empty() ? std::vector<int>{0, tables.numControl}
                                   : VulkanEvaluator::levelFirstElements(pointers(levels_))),
-      limit_(ctx, tables.limit),
+      limit_(ctx, tables.limit, editable),
       fallback_(tables.route == TableRoute::LevelsThenLimit
                     ? std::make_unique<VulkanMeshNormalTable>(ctx, tables.fallback)
                     : nullptr),

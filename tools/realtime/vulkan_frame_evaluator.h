@@ -23,7 +23,15 @@ class VulkanFrameEvaluator : public FrameEvaluator {
 public:
     // Uploads `tables` to `ctx`'s device once (waits). The context (headless, or adopted from a
     // renderer: VulkanContext::External) must outlive the evaluator; `tables` need not.
-    VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTables& tables);
+    // `editable`: the limit table is uploaded with room for edits' updates (updateLimit).
+    VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTables& tables, bool editable = false);
+
+    // After `change` = LimitTableUpdate::update(..., tables.limit) on the tables this evaluator was
+    // made from (editable): the device's limit table updated by range (waits). False where it
+    // cannot be (make the evaluator again then).
+    bool updateLimit(const LimitStencilTable& limit, const LimitTableChange& change) {
+        return limit_.update(ctx_, limit, change);
+    }
 
     std::string name() const override { return "vulkan"; }
     // Uploads the cage (one staging copy, waited on).

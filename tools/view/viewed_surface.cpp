@@ -49,7 +49,7 @@ std::vector<float> levelUVs(const Refiner& refiner, int level, const std::vector
 
 std::unique_ptr<realtime::FrameEvaluator> makeEvaluator(VulkanContext& ctx, const realtime::SurfaceTables& tables,
                                                         cli::EvaluatorKind kind) {
-    if (kind == cli::EvaluatorKind::Vulkan) return std::make_unique<realtime::VulkanFrameEvaluator>(ctx, tables);
+    if (kind == cli::EvaluatorKind::Vulkan) return std::make_unique<realtime::VulkanFrameEvaluator>(ctx, tables, true);
     return std::make_unique<realtime::HostFrameEvaluator>(tables, kind == cli::EvaluatorKind::Tbb);
 }
 
@@ -123,16 +123,22 @@ double ViewedSurface::edit(const TagEdits& edits) {
         tables.levels[L - 1] = refiner_->levelStencils(int(L));
         levelsChanged = true;
     }
+    LimitTableChange change;
     if (tables.patches) {
         *tables.patches = refiner_->levelPatches(level_, realtime::patchLevelFor(level_));
     } else {
-        limitUpdate_->update(report, tables.limit);
+        change = limitUpdate_->update(report, tables.limit);
         if (holesChanged && tables.route == realtime::TableRoute::LevelsThenLimit)
             tables.fallback = buildMeshNormalTable(refiner_->faces(level_));
     }
     // The host evaluators read the limit table where it is; what they derive from the per-level
-    // tables, and the device's copies, are made again.
-    const bool newEvaluator = onDevice_ || levelsChanged || tables.patches;
+    // tables is made again. The device's limit table is updated by range where nothing else
+    // changed; its other tables are uploaded again.
+    bool newEvaluator = levelsChanged || tables.patches;
+    if (onDevice_ && !newEvaluator) {
+        auto& device = static_cast<realtime::VulkanFrameEvaluator&>(*evaluator_);
+        newEvaluator = holesChanged || !device.updateLimit(tables.limit, change);
+    }
     const bool show = holesChanged || refiner_->numFVarChannels() > 0 || tessellation_ || (onDevice_ && tables.patches);
     if (newEvaluator) {
         std::unique_ptr<realtime::FrameEvaluator> evaluator = makeEvaluator(ctx_, tables, kind_);

@@ -1,4 +1,4 @@
-#include "bench/frame_case.h"
+#include "bench/quadtri/frame_case.h"
 
 #include <algorithm>
 #include <cmath>

@@ -21,14 +21,18 @@ class FaceSurfaceFactory;
 
 namespace quadtri::bench {
 
-// A cage with its creases, and the options quadtri runs it with (its scheme and the file's tags).
+// A cage with its tags, and the options quadtri runs it with (its scheme and the file's tags).
+// The surface cases take creases only; the edit cases (bench/edit_case.h) corners and holes too.
 struct SurfaceCage {
     ControlMesh mesh;
     std::vector<int> creasePairs;  // 2 vertices per crease
     std::vector<float> creaseSharpness;
+    std::vector<int> corners;
+    std::vector<float> cornerSharpness;
+    std::vector<int> holes;
     Options options;
 
-    TopologyDescriptor descriptor() const;  // the mesh's, with the creases
+    TopologyDescriptor descriptor() const;  // the mesh's, with the tags
 };
 
 // The points every way evaluates: per point its face and (u, v) on it (OpenSubdiv's Bfr

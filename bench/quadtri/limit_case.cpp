@@ -1,4 +1,4 @@
-#include "bench/limit_case.h"
+#include "bench/quadtri/limit_case.h"
 
 #include <cstring>
 #include <sstream>

@@ -1,4 +1,4 @@
-#include "bench/surface_case.h"
+#include "bench/quadtri/surface_case.h"
 
 #include <random>
 
@@ -12,6 +12,11 @@ TopologyDescriptor SurfaceCage::descriptor() const {
     desc.numCreases = int(creaseSharpness.size());
     desc.creaseVertexPairs = creasePairs.data();
     desc.creaseWeights = creaseSharpness.data();
+    desc.numCorners = int(cornerSharpness.size());
+    desc.cornerVertexIndices = corners.data();
+    desc.cornerWeights = cornerSharpness.data();
+    desc.numHoles = int(holes.size());
+    desc.holeIndices = holes.data();
     return desc;
 }
 

@@ -1,4 +1,4 @@
-#include "bench/vulkan_case.h"
+#include "bench/quadtri/vulkan_case.h"
 
 #include <cmath>
 #include <memory>

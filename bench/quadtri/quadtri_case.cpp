@@ -1,4 +1,4 @@
-#include "bench/quadtri_case.h"
+#include "bench/quadtri/quadtri_case.h"
 
 #include <tbb/global_control.h>
 

@@ -1,4 +1,4 @@
-#include "bench/tessellation_case.h"
+#include "bench/quadtri/tessellation_case.h"
 
 #include <tbb/task_arena.h>
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "bench/figures.h"
-#include "bench/surface_case.h"
+#include "bench/quadtri/surface_case.h"
 
 namespace quadtri::bench {
 
