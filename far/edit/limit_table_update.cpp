@@ -8,6 +8,7 @@
 
 #include <quadtri/far/refiner.h>
 
+#include "far/edit/composed_rows.h"
 #include "far/edit/stencil_splice.h"
 #include "far/edit/tag_changes.h"
 #include "far/internal/stencil_table_double.h"
@@ -26,56 +27,6 @@ namespace {
 void sortUnique(std::vector<int>& v) {
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
-}
-
-std::vector<int> facesAt(const Topology& t, const std::vector<int>& vertices) {
-    std::vector<int> faces;
-    for (int v : vertices)
-        for (int f : t.facesOfVertex(v)) faces.push_back(f);
-    sortUnique(faces);
-    return faces;
-}
-
-std::vector<int> verticesOf(const Topology& t, const std::vector<int>& faces) {
-    std::vector<int> vertices;
-    for (int f : faces)
-        for (int v : t.verticesOfFace(f)) vertices.push_back(v);
-    sortUnique(vertices);
-    return vertices;
-}
-
-// Rows `rows` of a float table as a double one, each index mapped through `indexOf`.
-template <class IndexOf>
-StencilTableD rowsOf(const StencilTable& table, const std::vector<int>& rows, int numSources, IndexOf indexOf) {
-    StencilTableD out;
-    out.numSourceVertices = numSources;
-    for (int r : rows) {
-        out.offsets.push_back(int(out.indices.size()));
-        out.sizes.push_back(table.size(r));
-        const float* w = table.weightsOf(r);
-        for (int k = 0; k < table.size(r); ++k) {
-            out.indices.push_back(indexOf(table.indices[std::size_t(table.offsets[r] + k)]));
-            out.weights.push_back(double(w[k]));
-        }
-    }
-    return out;
-}
-
-// The stencils of level L's `vertices` (sorted) over the control vertices, composed in double as
-// the Refiner composes them (level by level, each level's float table read as double).
-StencilTableD composedRows(const Refiner& refiner, int L, const std::vector<int>& vertices) {
-    const StencilTable& table = refiner.levelStencils(L);
-    if (L == 1) return rowsOf(table, vertices, table.numSourceVertices, [](int s) { return s; });
-    std::vector<int> sources;
-    for (int r : vertices)
-        sources.insert(sources.end(), table.indices.begin() + table.offsets[r],
-                       table.indices.begin() + table.offsets[r + 1]);
-    sortUnique(sources);
-    const StencilTableD inner = composedRows(refiner, L - 1, sources);
-    const StencilTableD outer = rowsOf(table, vertices, int(sources.size()), [&](int s) {
-        return int(std::lower_bound(sources.begin(), sources.end(), s) - sources.begin());
-    });
-    return composeStencils(outer, inner);
 }
 
 }  // namespace
@@ -104,39 +55,6 @@ struct LimitTableUpdate::State {
         if (seeds.empty()) return {};
         const int rings = rulesOf(refiner.options().scheme).surfaceLimitRings();
         return verticesOf(t, widen(t, facesAt(t, seeds), rings));
-    }
-
-    // Per level l = 1..L, whether each vertex's stencil over the control vertices changed: its
-    // own stencil did, or it reads a vertex of level l - 1 whose did.
-    std::vector<std::uint8_t> composedChanges(const EditReport& report) const {
-        const SchemeRules& rules = rulesOf(refiner.options().scheme);
-        std::vector<std::uint8_t> changed;
-        std::vector<int> list;
-        for (int l = 1; l <= level; ++l) {
-            const Topology& parent = refiner.level(l - 1);
-            const StencilTable& table = refiner.levelStencils(l);
-            std::vector<std::uint8_t> next(std::size_t(table.numStencils()), 0);
-            std::vector<int> nextList = report.levels[std::size_t(l)].stencils;
-            for (int c : nextList) next[std::size_t(c)] = 1;
-            if (!list.empty()) {
-                // Readers of a changed parent: children of the faces within the masks' reach.
-                const ChildNumbering numbering = numberChildren(parent, rules.triangleSplit());
-                const std::vector<int> candidates =
-                    childrenOf(parent, numbering, widen(parent, facesAt(parent, list), rules.surfaceRings()));
-                for (int c : candidates) {
-                    if (next[std::size_t(c)]) continue;
-                    for (int k = table.offsets[c]; k < table.offsets[c + 1]; ++k)
-                        if (changed[std::size_t(table.indices[std::size_t(k)])]) {
-                            next[std::size_t(c)] = 1;
-                            nextList.push_back(c);
-                            break;
-                        }
-                }
-            }
-            changed.swap(next);
-            list.swap(nextList);
-        }
-        return changed;
     }
 };
 
@@ -184,7 +102,7 @@ LimitTableChange LimitTableUpdate::update(const EditReport& report, LimitStencil
         rows = spliceLimitStencils(s.masks, near, fresh, s.maskMarks);
     }
     // The masks that read a vertex whose stencil over the control vertices changed.
-    const std::vector<std::uint8_t> changed = s.composedChanges(report);
+    const std::vector<std::uint8_t> changed = composedChanges(s.refiner, N, report);
     std::vector<int> changedList;
     for (int v = 0; v < int(changed.size()); ++v)
         if (changed[std::size_t(v)]) changedList.push_back(v);

@@ -1,6 +1,6 @@
-// LimitTableUpdate against the Refiner's own tables after the same edits: over level L bit for
-// bit, over the control vertices within rounding; for every mesh and scheme, and after a hundred
-// edits in a row.
+// LimitTableUpdate and FactorizedTableUpdate against the Refiner's own tables after the same
+// edits: limit tables over level L bit for bit, tables over the control vertices within rounding;
+// for every mesh and scheme, and after a hundred edits in a row.
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <quadtri/far/limit_table_update.h>
+#include <quadtri/far/stencil_table_update.h>
 
 #include "tests/far/edit_support.h"
 #include "tests/test_support.h"
@@ -68,7 +69,7 @@ TEST(LimitTableUpdate, EqualsTheRefinersTablesOnEveryMeshAndScheme) {
     std::mt19937 random(5);
     for (const std::string& name : allMeshes()) {
         const io::ObjMesh mesh = io::readObj(meshPath(name));
-        const int levels = mesh.numFaces() > 2000 ? 1 : 2;
+        const int levels = mesh.numFaces() > 300 ? 1 : 2;  // the pawn and the rook at level 1: time
         for (Scheme scheme : allSchemes()) {
             Options options;
             options.scheme = scheme;
@@ -83,16 +84,12 @@ TEST(LimitTableUpdate, EqualsTheRefinersTablesOnEveryMeshAndScheme) {
             for (Sources sources : {Sources::Level, Sources::Control}) {
                 LimitTableUpdate update(*refiner, levels, sources);
                 LimitStencilTable table = tableOf(*refiner, levels, sources);
-                for (int trial = 0; trial < 2; ++trial) {
-                    const LimitStencilTable before = table;
-                    const EditReport report = refiner->applyEdits(randomEdits(refiner->level(0), random, holes));
-                    const std::vector<int> written = update.update(report, table).stencils;
-                    expectUpToDate(*refiner, levels, sources, table, before, written,
-                                   name + ", " + toString(scheme) +
-                                       (sources == Sources::Level ? ", level" : ", control") + ", edit " +
-                                       std::to_string(trial));
-                    if (HasFailure()) return;
-                }
+                const LimitStencilTable before = table;
+                const EditReport report = refiner->applyEdits(randomEdits(refiner->level(0), random, holes));
+                const std::vector<int> written = update.update(report, table).stencils;
+                expectUpToDate(*refiner, levels, sources, table, before, written,
+                               name + ", " + toString(scheme) + (sources == Sources::Level ? ", level" : ", control"));
+                if (HasFailure()) return;
             }
         }
     }
@@ -121,6 +118,66 @@ TEST(LimitTableUpdate, AHundredEditsInARowKeepTheTablesUpToDate) {
     }
 }
 
+// The largest difference of a weight between two CSR tables' stencils (a source one lacks weighs
+// 0 there).
+double largestDifference(const StencilTable& a, const StencilTable& b) {
+    if (a.numStencils() != b.numStencils()) return INFINITY;
+    double largest = 0.0;
+    for (int i = 0; i < a.numStencils(); ++i) {
+        std::map<int, double> sum;
+        for (int k = 0; k < a.size(i); ++k) sum[a.indices[std::size_t(a.offsets[i] + k)]] += a.weightsOf(i)[k];
+        for (int k = 0; k < b.size(i); ++k) sum[b.indices[std::size_t(b.offsets[i] + k)]] -= b.weightsOf(i)[k];
+        for (const auto& [source, d] : sum) largest = std::max(largest, std::abs(d));
+    }
+    return largest;
+}
+
+bool sameStencil(const StencilTable& a, const StencilTable& b, int i) {
+    const int n = a.size(i);
+    return n == b.size(i) &&
+           std::equal(a.indices.begin() + a.offsets[i], a.indices.begin() + a.offsets[i + 1], b.indices.begin() + b.offsets[i]) &&
+           std::memcmp(a.weightsOf(i), b.weightsOf(i), sizeof(float) * std::size_t(n)) == 0;
+}
+
+// FactorizedTableUpdate: factorizedStencils(L) within 1e-6 after every edit, every stencil that
+// changed among those reported, on every mesh and scheme and after a hundred edits in a row.
+TEST(FactorizedTableUpdate, EqualsTheRefinersTableAfterEveryEdit) {
+    std::mt19937 random(23);
+    auto check = [&](const std::string& name, Scheme scheme, int levels, int edits) {
+        const io::ObjMesh mesh = io::readObj(meshPath(name));
+        Options options;
+        options.scheme = scheme;
+        options = mesh.applyTags(options);
+        std::unique_ptr<Refiner> refiner;
+        try {
+            refiner = build(mesh, options, levels);
+        } catch (const TopologyError&) {
+            return;
+        }
+        const bool holes = refiner->faces(0).numFaces() == mesh.numFaces();
+        FactorizedTableUpdate update(*refiner, levels);
+        StencilTable table = refiner->factorizedStencils(levels);
+        for (int k = 1; k <= edits; ++k) {
+            const StencilTable before = table;
+            const StencilTableChange change = update.update(refiner->applyEdits(randomEdits(refiner->level(0), random, holes)), table);
+            if (edits > 10 && k % 25 != 0) continue;
+            const std::string where = name + ", " + toString(scheme) + ", edit " + std::to_string(k);
+            EXPECT_LT(largestDifference(table, refiner->factorizedStencils(levels)), 1e-6) << where;
+            bool resized = false;
+            for (int i = 0; i < table.numStencils(); ++i) {
+                const bool reported = std::binary_search(change.stencils.begin(), change.stencils.end(), i);
+                ASSERT_TRUE(reported || sameStencil(before, table, i)) << where << ", stencil " << i;
+                resized = resized || (reported && before.size(i) != table.size(i));
+            }
+            EXPECT_EQ(change.resized, resized) << where;
+        }
+    };
+    for (const std::string& name : allMeshes())
+        for (Scheme scheme : allSchemes()) check(name, scheme, 2, 2);
+    check("mixed/cylinder_capped_creased.obj", Scheme::SchaeferWarren, 3, 100);
+    check("osd/catmark_pawn.obj", Scheme::CatmullClark, 2, 100);
+}
+
 TEST(LimitTableUpdate, RefusesALevelWithoutWhatItReads) {
     const io::ObjMesh mesh = io::readObj(meshPath("mixed/mixed_torus.obj"));
     Refiner facesOnly(mesh.descriptor(), Options());
@@ -131,6 +188,8 @@ TEST(LimitTableUpdate, RefusesALevelWithoutWhatItReads) {
     EXPECT_THROW(LimitTableUpdate(noTables, 2, Sources::Control), std::logic_error);
     EXPECT_NO_THROW(LimitTableUpdate(noTables, 2, Sources::Level));
     EXPECT_THROW(LimitTableUpdate(noTables, 3, Sources::Level), std::logic_error);
+    EXPECT_THROW(FactorizedTableUpdate(noTables, 2), std::logic_error);
+    EXPECT_THROW(FactorizedTableUpdate(facesOnly, 0), std::logic_error);
 }
 
 }  // namespace
