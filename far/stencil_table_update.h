@@ -20,6 +20,7 @@ class Refiner;
 struct StencilTableChange {
     std::vector<int> stencils;  // that changed, sorted
     bool resized = false;       // one changed its size: the arrays moved from the first on
+    bool poolLaidOut = false;   // the weight pool was laid out again (else it only grew at its end)
 };
 
 class QUADTRI_API FactorizedTableUpdate {

@@ -47,6 +47,9 @@ struct EditedLevel {
     // stencil on (else only the changed stencils' indices, weight offsets and new weights at the
     // pool's end were written).
     bool tableResized = false;
+    // Whether the table's weight pool was laid out again (it grows at its end otherwise): every
+    // stencil's weight offset may have changed.
+    bool poolLaidOut = false;
 };
 
 struct EditReport {

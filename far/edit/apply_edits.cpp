@@ -68,6 +68,7 @@ EditReport Refiner::applyEdits(const TagEdits& edits) {
             level.recomputedStencils = int(children.size());
             level.stencils = std::move(splice.changed);
             level.tableResized = splice.resized;
+            level.poolLaidOut = splice.poolLaidOut;
         }
         changed = passOn(parent, numbering, changed, options_.creaseMethod, levels_[std::size_t(L)]);
         report(changed, level);

@@ -149,6 +149,7 @@ Splice spliceStencils(StencilTable& table, const std::vector<int>& rows, const S
     if (table.weights.size() > 2 * poolMark + 4096) {
         compactWeights(table);
         poolMark = table.weights.size();
+        out.poolLaidOut = true;
     }
     return out;
 }

@@ -14,6 +14,7 @@ namespace internal {
 struct Splice {
     std::vector<int> changed;  // the rows whose stencil differs, sorted
     bool resized = false;      // a changed row has another size: the arrays moved from it on
+    bool poolLaidOut = false;  // the weight pool was laid out again: every row's weight offset may differ
 };
 
 // Puts stencil k of `fresh` in row rows[k] of `table` (rows sorted) where the two differ, bit

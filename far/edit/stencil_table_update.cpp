@@ -41,6 +41,7 @@ StencilTableChange FactorizedTableUpdate::update(const EditReport& report, Stenc
     Splice splice = spliceStencils(table, rows, fresh, poolMark_);
     out.stencils = std::move(splice.changed);
     out.resized = splice.resized;
+    out.poolLaidOut = splice.poolLaidOut;
     return out;
 }
 

@@ -61,7 +61,7 @@ VulkanPooledTable::VulkanPooledTable(VulkanContext& ctx, const HostArrays& a, co
         regions.push_back({to.buffer(), 0, data, nullptr, bytes});
     };
     b.indicesUsed = a.indices.size(), b.weightsUsed = a.weights.size();
-    b.indicesRoom = roomFor(b.indicesUsed, a.roomToGrow), b.weightsRoom = roomFor(b.weightsUsed, a.roomToGrow);
+    b.indicesRoom = roomFor(b.indicesUsed, a.roomToGrow && a.sizes), b.weightsRoom = roomFor(b.weightsUsed, a.roomToGrow);
     std::vector<detail::CopyRegion> regions;
     if (a.sizes) add(b.sizes, a.sizes->data(), a.sizes->size() * sizeof(int), regions, 0);
     add(b.offsets, a.offsets.data(), a.offsets.size() * sizeof(int), regions, 0);
@@ -79,34 +79,43 @@ VulkanPooledTable::VulkanPooledTable(VulkanContext& ctx, const HostArrays& a, co
 }
 
 bool VulkanPooledTable::updateStencils(VulkanContext& ctx, const HostArrays& a, const std::vector<int>& stencils) {
-    if (!buffers_ || !a.sizes) return false;
+    if (!buffers_) return false;
     Buffers& b = *buffers_;
-    if (int(a.weightOffsets.size()) != b.numStencils || a.sizes->size() != a.weightOffsets.size() ||
-        a.offsets.size() != a.weightOffsets.size() || a.indices.size() < b.indicesUsed ||
-        a.weights.size() < b.weightsUsed || a.indices.size() > b.indicesRoom || a.weights.size() > b.weightsRoom)
+    // A limit table's runs are a pool that may grow at its end; a CSR table's entries must stay put.
+    const bool csr = a.sizes == nullptr;
+    if (int(a.weightOffsets.size()) != b.numStencils ||
+        a.offsets.size() != a.weightOffsets.size() + (csr ? 1 : 0) || (a.sizes && a.sizes->size() != a.weightOffsets.size()) ||
+        (csr ? a.indices.size() != b.indicesUsed : a.indices.size() < b.indicesUsed) || a.weights.size() < b.weightsUsed ||
+        a.indices.size() > b.indicesRoom || a.weights.size() > b.weightsRoom)
         return false;
+    auto sizeOf = [&](int i) { return csr ? a.offsets[std::size_t(i) + 1] - a.offsets[std::size_t(i)] : (*a.sizes)[std::size_t(i)]; };
     for (int i : stencils) {
-        if (i < 0 || i >= b.numStencils) throw std::invalid_argument("VulkanPooledTable: stencil " + std::to_string(i) + " out of range");
-        const std::int64_t first = a.offsets[std::size_t(i)], size = (*a.sizes)[std::size_t(i)],
-                           weights = a.weightOffsets[std::size_t(i)];
+        if (i < 0 || i >= b.numStencils)
+            throw std::invalid_argument("VulkanPooledTable: stencil " + std::to_string(i) + " out of range");
+        const std::int64_t first = a.offsets[std::size_t(i)], size = sizeOf(i), weights = a.weightOffsets[std::size_t(i)];
         if (first < 0 || size < 0 || first + size > std::int64_t(a.indices.size()) || weights < 0 ||
             weights + a.weightsPerEntry * size > std::int64_t(a.weights.size()))
             throw std::invalid_argument("VulkanPooledTable: stencil " + std::to_string(i) + " reaches outside its arrays");
     }
     std::vector<detail::CopyRegion> regions;
-    auto tail = [&](const detail::DeviceBuffer& to, const void* data, std::size_t from, std::size_t to_, std::size_t size) {
-        if (to_ > from) regions.push_back({to.buffer(), from * size, static_cast<const char*>(data) + from * size, nullptr, (to_ - from) * size});
+    auto range = [&](const detail::DeviceBuffer& to, const auto* data, std::size_t from, std::size_t until) {
+        if (until > from)
+            regions.push_back({to.buffer(), from * sizeof(*data), data + from, nullptr, (until - from) * sizeof(*data)});
     };
-    tail(b.indices, a.indices.data(), b.indicesUsed, a.indices.size(), sizeof(int));
-    tail(b.weights, a.weights.data(), b.weightsUsed, a.weights.size(), sizeof(float));
+    if (!csr) range(b.indices, a.indices.data(), b.indicesUsed, a.indices.size());
+    range(b.weights, a.weights.data(), b.weightsUsed, a.weights.size());
     // Each run of consecutive stencils in one region per array.
     for (std::size_t k = 0; k < stencils.size();) {
         std::size_t end = k + 1;
         while (end < stencils.size() && stencils[end] == stencils[end - 1] + 1) ++end;
-        const std::size_t first = std::size_t(stencils[k]), count = std::size_t(stencils[end - 1]) - first + 1;
-        for (auto [buffer, array] : {std::pair{&b.sizes, a.sizes}, std::pair{&b.offsets, &a.offsets},
-                                     std::pair{&b.weightOffsets, &a.weightOffsets}})
-            regions.push_back({buffer->buffer(), first * sizeof(int), array->data() + first, nullptr, count * sizeof(int)});
+        const std::size_t first = std::size_t(stencils[k]), last = std::size_t(stencils[end - 1]) + 1;
+        range(b.weightOffsets, a.weightOffsets.data(), first, last);
+        if (csr) {
+            range(b.indices, a.indices.data(), std::size_t(a.offsets[first]), std::size_t(a.offsets[last]));
+        } else {
+            range(b.sizes, a.sizes->data(), first, last);
+            range(b.offsets, a.offsets.data(), first, last);
+        }
         k = end;
     }
     if (!regions.empty()) detail::upload(ctx, regions);

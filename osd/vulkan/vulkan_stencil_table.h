@@ -49,7 +49,7 @@ protected:
         const std::vector<float>& weights;
         int weightsPerEntry;
         // Room in the pools' buffers for what updateStencils appends: half their size again, at
-        // least 16 384 elements each.
+        // least 16 384 elements each (a CSR table's weights; its entries are no pool).
         bool roomToGrow = false;
     };
     // Copies the arrays through one staging buffer (waits); std::invalid_argument naming `table`
@@ -58,12 +58,12 @@ protected:
     VulkanPooledTable(VulkanContext& ctx, const HostArrays& arrays, const char* table);
     // The per-stencil sizes (VK_NULL_HANDLE for a CSR table).
     VkBuffer sizes() const;
-    // For a table with sizes made with roomToGrow: `stencils` (sorted) written again from
-    // `arrays`, the host table as changed since this copy was made or last updated, its pools
-    // only grown at their ends; and the pools' new ends (waits). False, with nothing changed,
-    // where that is not so (the pools shrank, or outgrew their room, or the stencil count
-    // changed): make a new copy then. std::invalid_argument where a written stencil reaches
-    // outside the arrays.
+    // For a table made with roomToGrow: `stencils` (sorted) written again from `arrays`, the host
+    // table as changed since this copy was made or last updated, its pools only grown at their
+    // ends (a CSR table's entries where they were); and the pools' new ends (waits). False, with
+    // nothing changed, where that is not so (the pools shrank or outgrew their room, the entries
+    // moved, the stencil count changed): make a new copy then. std::invalid_argument where a
+    // written stencil reaches outside the arrays.
     bool updateStencils(VulkanContext& ctx, const HostArrays& arrays, const std::vector<int>& stencils);
 
 private:
@@ -73,10 +73,25 @@ private:
 
 class QUADTRI_API VulkanStencilTable : public VulkanPooledTable {
 public:
-    VulkanStencilTable(VulkanContext& ctx, const StencilTable& table)
+    // `updatable`: the weight pool gets room for what an edit appends (half its size again, at
+    // least 16 384 floats), so that update() can write an edit's changes by range.
+    VulkanStencilTable(VulkanContext& ctx, const StencilTable& table, bool updatable = false)
         : VulkanPooledTable(ctx, {table.numSourceVertices, nullptr, table.offsets, table.indices, table.weightOffsets,
-                                  table.weights, 1},
+                                  table.weights, 1, updatable},
                             "StencilTable") {}
+
+    // After an edit changed `stencils` of the host table this copy was made (or last updated)
+    // from without moving its entries (EditedLevel::tableResized and poolLaidOut false, as
+    // Refiner::applyEdits reports them for a per-level table; likewise StencilTableChange): their
+    // indices and weight offsets and the pool's new end uploaded (waits). False, with nothing
+    // changed, where it cannot be: copy the table again then.
+    bool update(VulkanContext& ctx, const StencilTable& table, const std::vector<int>& stencils, bool resized,
+                bool poolLaidOut) {
+        if (resized || poolLaidOut) return false;
+        return updateStencils(ctx, {table.numSourceVertices, nullptr, table.offsets, table.indices, table.weightOffsets,
+                                    table.weights, 1, true},
+                              stencils);
+    }
 };
 
 }  // namespace v0

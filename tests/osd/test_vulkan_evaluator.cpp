@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iterator>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include <quadtri/osd/cpu_evaluator.h>
 #include <quadtri/osd/tbb_evaluator.h>
 #include <quadtri/osd/vulkan_evaluator.h>
+#include "tests/far/edit_support.h"
 #include "tests/test_support.h"
 #include "tests/osd/vulkan_test_support.h"
 
@@ -200,6 +202,56 @@ std::string outcome(Eval&& eval) {
 
 // The device reads whatever the table says: offsets that do not span the indices, or a stencil
 // whose weights reach past the pool, are refused on upload.
+// Per-level tables kept up to date with edits (Refiner::applyEdits) and their device copies
+// updated by range where the entries stayed put (VulkanStencilTable::update): after every tenth of
+// 40 random edits the device evaluates each level as a fresh copy of the host table does, bit for
+// bit; a copy whose entries moved is refused the update.
+TEST_F(VulkanTest, PerLevelTablesUpdatedByRangeEqualFreshCopies) {
+    const io::ObjMesh mesh = io::readObj(meshPath("mixed/mixed_torus.obj"));
+    Options options;
+    options.scheme = Scheme::SchaeferWarren;
+    std::unique_ptr<Refiner> refiner = build(mesh, options, 3);
+    std::vector<VulkanStencilTable> device;
+    for (int L = 1; L <= 3; ++L) device.emplace_back(*ctx, refiner->levelStencils(L), true);
+    const BufferDescriptor d(0, 3, 3);
+    auto evaluate = [&](const VulkanStencilTable& table, int L) {
+        // Any data will do, as long as it differs from vertex to vertex.
+        std::vector<float> source(3 * std::size_t(refiner->faces(L - 1).numVertices()));
+        for (std::size_t i = 0; i < source.size(); ++i) source[i] = float(i % 97) * 0.01f + float(i % 5);
+        VulkanVertexBuffer src = VulkanVertexBuffer::create(*ctx, int(source.size() / 3), 3);
+        src.updateData(source.data(), 0, src.numElements());
+        VulkanVertexBuffer dst = VulkanVertexBuffer::create(*ctx, table.numStencils(), 3);
+        VulkanEvaluator evaluator(*ctx);
+        evaluator.EvalStencilsAndWait(src, d, dst, d, table);
+        std::vector<float> out(dst.numFloats());
+        dst.readBack(out.data());
+        return out;
+    };
+    std::mt19937 random(29);
+    int byRange = 0, copied = 0;
+    for (int k = 1; k <= 40; ++k) {
+        const EditReport report = refiner->applyEdits(randomEdits(refiner->level(0), random, false));
+        for (int L = 1; L <= 3; ++L) {
+            const EditedLevel& edited = report.levels[std::size_t(L)];
+            if (edited.stencils.empty()) continue;
+            VulkanStencilTable& copy = device[std::size_t(L) - 1];
+            if (copy.update(*ctx, refiner->levelStencils(L), edited.stencils, edited.tableResized, edited.poolLaidOut)) {
+                ++byRange;
+            } else {
+                EXPECT_TRUE(edited.tableResized || edited.poolLaidOut) << "edit " << k << ", level " << L;
+                copy = VulkanStencilTable(*ctx, refiner->levelStencils(L), true);
+                ++copied;
+            }
+        }
+        if (k % 10 != 0) continue;
+        for (int L = 1; L <= 3; ++L)
+            EXPECT_EQ(evaluate(device[std::size_t(L) - 1], L), evaluate(VulkanStencilTable(*ctx, refiner->levelStencils(L)), L))
+                << "edit " << k << ", level " << L;
+    }
+    EXPECT_GT(byRange, 10);
+    EXPECT_GT(copied, 0);  // creases that start or end change a stencil's size
+}
+
 TEST_F(VulkanTest, InconsistentStencilTablesAreRefused) {
     const StencilTable good = handCheckedTable();
     StencilTable shortIndices = good, pastThePool = good;

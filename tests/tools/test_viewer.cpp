@@ -320,7 +320,8 @@ TEST(Viewer, ThePatchRouteDrawsTheSamePicture) {
 TEST(Viewer, AnEditedSurfaceDrawsWhatARebuiltOneDraws) {
     SKIP_WITHOUT_XVFB();
     const std::vector<std::pair<std::string, std::string>> ways = {
-        {"vulkan", "factorized"}, {"cpu", "factorized"}, {"tbb", "levels"}, {"cpu", "patches"}, {"vulkan", "patches"}};
+        {"vulkan", "factorized"}, {"cpu", "factorized"}, {"tbb", "levels"}, {"vulkan", "levels"}, {"cpu", "patches"},
+        {"vulkan", "patches"}};
     const std::string saved = work("edited.obj");
     std::string edit = "shading reflection-lines\n", again = "shading reflection-lines\n";
     auto shot = [&](const std::string& kind, std::size_t k) { return work(kind + std::to_string(k) + ".png"); };

@@ -14,9 +14,10 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-std::vector<std::unique_ptr<VulkanStencilTable>> upload(VulkanContext& ctx, const std::vector<StencilTable>& tables) {
+std::vector<std::unique_ptr<VulkanStencilTable>> upload(VulkanContext& ctx, const std::vector<StencilTable>& tables,
+                                                        bool editable) {
     std::vector<std::unique_ptr<VulkanStencilTable>> uploaded;
-    for (const StencilTable& table : tables) uploaded.push_back(std::make_unique<VulkanStencilTable>(ctx, table));
+    for (const StencilTable& table : tables) uploaded.push_back(std::make_unique<VulkanStencilTable>(ctx, table, editable));
     return uploaded;
 }
 
@@ -31,7 +32,7 @@ const BufferDescriptor kXyz(0, 3, 3);
 }  // namespace
 
 VulkanFrameEvaluator::VulkanFrameEvaluator(VulkanContext& ctx, const SurfaceTables& tables, bool editable)
-    : ctx_(ctx), route_(tables.route), numControl_(tables.numControl), levels_(upload(ctx, tables.levels)),
+    : ctx_(ctx), route_(tables.route), numControl_(tables.numControl), levels_(upload(ctx, tables.levels, editable)),
       levelFirst_(levels_.empty() ? std::vector<int>{0, tables.numControl}
                                   : VulkanEvaluator::levelFirstElements(pointers(levels_))),
       limit_(ctx, tables.limit, editable),

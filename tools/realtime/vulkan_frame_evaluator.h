@@ -32,6 +32,11 @@ public:
     bool updateLimit(const LimitStencilTable& limit, const LimitTableChange& change) {
         return limit_.update(ctx_, limit, change);
     }
+    // The same for the per-level table of level L (1..N under LevelsThenLimit, 1..K under
+    // Patches) after Refiner::applyEdits changed it as `edited` says.
+    bool updateLevel(int L, const StencilTable& table, const EditedLevel& edited) {
+        return levels_.at(std::size_t(L) - 1)->update(ctx_, table, edited.stencils, edited.tableResized, edited.poolLaidOut);
+    }
 
     std::string name() const override { return "vulkan"; }
     // Uploads the cage (one staging copy, waited on).

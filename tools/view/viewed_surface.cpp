@@ -117,10 +117,12 @@ double ViewedSurface::edit(const TagEdits& edits) {
     // Copies of the per-level tables that changed; the limit table updated in place; the patch
     // table made again (which faces are regular patches may change).
     bool levelsChanged = false, holesChanged = false;
+    std::vector<int> changedLevels;
     for (std::size_t L = 1; L < report.levels.size(); ++L) {
         holesChanged = holesChanged || !report.levels[L].faces.empty();
         if (L > tables.levels.size() || report.levels[L].stencils.empty()) continue;
         tables.levels[L - 1] = refiner_->levelStencils(int(L));
+        changedLevels.push_back(int(L));
         levelsChanged = true;
     }
     LimitTableChange change;
@@ -132,12 +134,14 @@ double ViewedSurface::edit(const TagEdits& edits) {
             tables.fallback = buildMeshNormalTable(refiner_->faces(level_));
     }
     // The host evaluators read the limit table where it is; what they derive from the per-level
-    // tables is made again. The device's limit table is updated by range where nothing else
-    // changed; its other tables are uploaded again.
-    bool newEvaluator = levelsChanged || tables.patches;
+    // tables is made again. The device's tables are updated by range where they can be (the
+    // per-level tables where their entries did not move), else uploaded again.
+    bool newEvaluator = tables.patches || (levelsChanged && !onDevice_);
     if (onDevice_ && !newEvaluator) {
         auto& device = static_cast<realtime::VulkanFrameEvaluator&>(*evaluator_);
         newEvaluator = holesChanged || !device.updateLimit(tables.limit, change);
+        for (int L : changedLevels)
+            newEvaluator = newEvaluator || !device.updateLevel(L, tables.levels[std::size_t(L) - 1], report.levels[std::size_t(L)]);
     }
     const bool show = holesChanged || refiner_->numFVarChannels() > 0 || tessellation_ || (onDevice_ && tables.patches);
     if (newEvaluator) {
