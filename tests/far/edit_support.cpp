@@ -36,6 +36,20 @@ std::unique_ptr<Refiner> build(const io::ObjMesh& mesh, const Options& options, 
     return refiner;
 }
 
+Options optionsOf(const io::ObjMesh& mesh, Scheme scheme) {
+    Options options;
+    options.scheme = scheme;
+    return mesh.applyTags(options);
+}
+
+std::unique_ptr<Refiner> buildIfTaken(const io::ObjMesh& mesh, Scheme scheme, int levels) {
+    try {
+        return build(mesh, optionsOf(mesh, scheme), levels);
+    } catch (const TopologyError&) {
+        return nullptr;
+    }
+}
+
 namespace {
 
 const float kSharpness[] = {0.0f, 0.4f, 1.0f, 1.6f, 2.5f, 3.0f, kInfiniteSharpness};

@@ -71,15 +71,8 @@ TEST(LimitTableUpdate, EqualsTheRefinersTablesOnEveryMeshAndScheme) {
         const io::ObjMesh mesh = io::readObj(meshPath(name));
         const int levels = mesh.numFaces() > 300 ? 1 : 2;  // the pawn and the rook at level 1: time
         for (Scheme scheme : allSchemes()) {
-            Options options;
-            options.scheme = scheme;
-            options = mesh.applyTags(options);
-            std::unique_ptr<Refiner> refiner;
-            try {
-                refiner = build(mesh, options, levels);
-            } catch (const TopologyError&) {
-                continue;
-            }
+            const std::unique_ptr<Refiner> refiner = buildIfTaken(mesh, scheme, levels);
+            if (!refiner) continue;
             const bool holes = refiner->faces(0).numFaces() == mesh.numFaces();
             for (Sources sources : {Sources::Level, Sources::Control}) {
                 LimitTableUpdate update(*refiner, levels, sources);
@@ -145,15 +138,8 @@ TEST(FactorizedTableUpdate, EqualsTheRefinersTableAfterEveryEdit) {
     std::mt19937 random(23);
     auto check = [&](const std::string& name, Scheme scheme, int levels, int edits) {
         const io::ObjMesh mesh = io::readObj(meshPath(name));
-        Options options;
-        options.scheme = scheme;
-        options = mesh.applyTags(options);
-        std::unique_ptr<Refiner> refiner;
-        try {
-            refiner = build(mesh, options, levels);
-        } catch (const TopologyError&) {
-            return;
-        }
+        const std::unique_ptr<Refiner> refiner = buildIfTaken(mesh, scheme, levels);
+        if (!refiner) return;
         const bool holes = refiner->faces(0).numFaces() == mesh.numFaces();
         FactorizedTableUpdate update(*refiner, levels);
         StencilTable table = refiner->factorizedStencils(levels);

@@ -156,8 +156,7 @@ TEST(TagEdits, TheReportNamesWhatChanged) {
 // Dragging a crease through many sharpness values keeps the weight pool bounded.
 TEST(TagEdits, APoolOfManySharpnessValuesStaysBounded) {
     io::ObjMesh mesh = io::readObj(meshPath("mixed/mixed_torus.obj"));
-    Options options;
-    options.scheme = Scheme::SchaeferWarren;
+    const Options options = optionsOf(mesh, Scheme::SchaeferWarren);
     std::unique_ptr<Refiner> refiner = build(mesh, options, 2);
     const Topology& level0 = refiner->level(0);
     const int a = level0.edgeVerts[0], b = level0.edgeVerts[1];
@@ -181,8 +180,7 @@ TEST(TagEdits, APoolOfManySharpnessValuesStaysBounded) {
 
 TEST(TagEdits, RefusedEditsNameTheItemAndChangeNothing) {
     io::ObjMesh mesh = io::readObj(meshPath("mixed/mixed_torus.obj"));
-    Options options;
-    options.scheme = Scheme::SchaeferWarren;
+    const Options options = optionsOf(mesh, Scheme::SchaeferWarren);
     std::unique_ptr<Refiner> refiner = build(mesh, options, 2);
     const Topology& level0 = refiner->level(0);
     const int a = level0.edgeVerts[0], b = level0.edgeVerts[1];
