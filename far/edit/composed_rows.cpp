@@ -11,11 +11,6 @@ namespace internal {
 
 namespace {
 
-void sortUnique(std::vector<int>& v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-}
-
 // Rows `rows` of a float table as a double one, each index mapped through `indexOf`.
 template <class IndexOf>
 StencilTableD rowsOf(const StencilTable& table, const std::vector<int>& rows, int numSources, IndexOf indexOf) {
@@ -34,22 +29,6 @@ StencilTableD rowsOf(const StencilTable& table, const std::vector<int>& rows, in
 }
 
 }  // namespace
-
-std::vector<int> facesAt(const Topology& t, const std::vector<int>& vertices) {
-    std::vector<int> faces;
-    for (int v : vertices)
-        for (int f : t.facesOfVertex(v)) faces.push_back(f);
-    sortUnique(faces);
-    return faces;
-}
-
-std::vector<int> verticesOf(const Topology& t, const std::vector<int>& faces) {
-    std::vector<int> vertices;
-    for (int f : faces)
-        for (int v : t.verticesOfFace(f)) vertices.push_back(v);
-    sortUnique(vertices);
-    return vertices;
-}
 
 std::vector<std::uint8_t> composedChanges(const Refiner& refiner, int level, const EditReport& report) {
     const SchemeRules& rules = rulesOf(refiner.options().scheme);

@@ -15,10 +15,6 @@ namespace quadtri {
 inline namespace v0 {
 namespace internal {
 
-// The faces at `vertices`, and the vertices of `faces`, sorted.
-std::vector<int> facesAt(const Topology& level, const std::vector<int>& vertices);
-std::vector<int> verticesOf(const Topology& level, const std::vector<int>& faces);
-
 // Per vertex of level L (>= 1), whether its stencil over the control vertices changed with the
 // edit `report` describes: its own per-level stencil did, or it reads a vertex of level L - 1
 // whose composed stencil did, and so on up to level 1. Readers are found among the children of

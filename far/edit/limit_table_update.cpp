@@ -22,15 +22,6 @@ inline namespace v0 {
 
 using namespace internal;
 
-namespace {
-
-void sortUnique(std::vector<int>& v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-}
-
-}  // namespace
-
 struct LimitTableUpdate::State {
     const Refiner& refiner;
     int level;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -16,11 +17,6 @@ namespace internal {
 namespace {
 
 using Component = TopologyDiagnostic::Component;
-
-void sortUnique(std::vector<int>& v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-}
 
 void checkSharpness(float s, Component component, int index) {
     if (!std::isfinite(s)) throw TopologyError({component, index, -1, "sharpness is not a finite number"});
@@ -43,6 +39,27 @@ std::vector<int> setTags(std::vector<int> items, std::vector<Value>& tags, Rule&
 }
 
 }  // namespace
+
+void sortUnique(std::vector<int>& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+std::vector<int> facesAt(const Topology& t, const std::vector<int>& vertices) {
+    std::vector<int> faces;
+    for (int v : vertices)
+        for (int f : t.facesOfVertex(v)) faces.push_back(f);
+    sortUnique(faces);
+    return faces;
+}
+
+std::vector<int> verticesOf(const Topology& t, const std::vector<int>& faces) {
+    std::vector<int> vertices;
+    for (int f : faces)
+        for (int v : t.verticesOfFace(f)) vertices.push_back(v);
+    sortUnique(vertices);
+    return vertices;
+}
 
 void checkEdits(const Topology& t, const TagEdits& edits) {
     const int nv = t.numVertices;
@@ -77,29 +94,21 @@ ChangedTags applyToLevel0(Topology& t, const TagEdits& edits, const Options& opt
                           std::vector<std::uint8_t>& givenHoles) {
     ChangedTags changed;
     // The last setting of an item wins.
-    std::vector<int> edges;
-    std::vector<std::pair<int, float>> edgeSettings, vertexSettings;
-    for (std::size_t i = 0; i < edits.creaseWeights.size(); ++i) {
-        const int e = findEdge(t, edits.creaseVertexPairs[2 * i], edits.creaseVertexPairs[2 * i + 1]);
-        edgeSettings.emplace_back(e, edits.creaseWeights[i]);
-        edges.push_back(e);
-    }
-    auto lastSetting = [](const std::vector<std::pair<int, float>>& settings, int item) {
-        float value = 0.0f;
-        for (const auto& [i, s] : settings)
-            if (i == item) value = s;
-        return value;
+    std::map<int, float> edgeSettings, vertexSettings;
+    for (std::size_t i = 0; i < edits.creaseWeights.size(); ++i)
+        edgeSettings[findEdge(t, edits.creaseVertexPairs[2 * i], edits.creaseVertexPairs[2 * i + 1])] =
+            edits.creaseWeights[i];
+    for (std::size_t i = 0; i < edits.cornerWeights.size(); ++i)
+        vertexSettings[edits.cornerVertices[i]] = edits.cornerWeights[i];
+    auto itemsOf = [](const std::map<int, float>& settings) {
+        std::vector<int> items;
+        for (const auto& entry : settings) items.push_back(entry.first);
+        return items;
     };
-    changed.edges =
-        setTags(edges, t.edgeSharpness, [&](int e) { return ruledEdgeSharpness(t, e, lastSetting(edgeSettings, e)); });
-    std::vector<int> vertices;
-    for (std::size_t i = 0; i < edits.cornerWeights.size(); ++i) {
-        vertexSettings.emplace_back(edits.cornerVertices[i], edits.cornerWeights[i]);
-        vertices.push_back(edits.cornerVertices[i]);
-    }
-    changed.vertices = setTags(vertices, t.vertSharpness, [&](int v) {
-        return ruledVertexSharpness(t, v, options, lastSetting(vertexSettings, v));
-    });
+    changed.edges = setTags(itemsOf(edgeSettings), t.edgeSharpness,
+                            [&](int e) { return ruledEdgeSharpness(t, e, edgeSettings.at(e)); });
+    changed.vertices = setTags(itemsOf(vertexSettings), t.vertSharpness,
+                               [&](int v) { return ruledVertexSharpness(t, v, options, vertexSettings.at(v)); });
     // Holes: those asked for, and under BoundaryInterpolation::None those of the faces at a
     // boundary vertex whose sharpness changed.
     std::vector<int> faces;
@@ -166,11 +175,7 @@ std::vector<int> facesNear(const Topology& p, const ChangedTags& changed, int ri
     std::vector<int> seeds = changed.vertices;
     for (int e : changed.edges)
         seeds.push_back(p.edgeVerts[2 * std::size_t(e)]), seeds.push_back(p.edgeVerts[2 * std::size_t(e) + 1]);
-    std::vector<int> faces;
-    for (int v : seeds)
-        for (int f : p.facesOfVertex(v)) faces.push_back(f);
-    sortUnique(faces);
-    return widen(p, faces, rings);
+    return widen(p, facesAt(p, seeds), rings);
 }
 
 std::vector<int> widen(const Topology& p, const std::vector<int>& faces, int rings) {

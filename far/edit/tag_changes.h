@@ -34,6 +34,12 @@ ChangedTags applyToLevel0(Topology& level0, const TagEdits& edits, const Options
 ChangedTags passOn(const Topology& parent, const ChildNumbering& numbering, const ChangedTags& changed,
                    CreaseMethod creaseMethod, Topology& child);
 
+// `v` sorted, each value once.
+void sortUnique(std::vector<int>& v);
+// The faces at `vertices`, and the vertices of `faces`, sorted.
+std::vector<int> facesAt(const Topology& level, const std::vector<int>& vertices);
+std::vector<int> verticesOf(const Topology& level, const std::vector<int>& faces);
+
 // The faces within `rings` face rings of a changed edge or vertex (ring 0: the faces at their
 // vertices), sorted. With the scheme's SchemeRules::surfaceRings(), the faces whose children's
 // masks can read a changed tag: a face's children read nothing beyond that many rings of it.

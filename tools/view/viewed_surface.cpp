@@ -116,14 +116,13 @@ double ViewedSurface::edit(const TagEdits& edits) {
     realtime::SurfaceTables& tables = *tables_;
     // Copies of the per-level tables that changed; the limit table updated in place; the patch
     // table made again (which faces are regular patches may change).
-    bool levelsChanged = false, holesChanged = false;
+    bool holesChanged = false;
     std::vector<int> changedLevels;
     for (std::size_t L = 1; L < report.levels.size(); ++L) {
         holesChanged = holesChanged || !report.levels[L].faces.empty();
         if (L > tables.levels.size() || report.levels[L].stencils.empty()) continue;
         tables.levels[L - 1] = refiner_->levelStencils(int(L));
         changedLevels.push_back(int(L));
-        levelsChanged = true;
     }
     LimitTableChange change;
     if (tables.patches) {
@@ -136,7 +135,7 @@ double ViewedSurface::edit(const TagEdits& edits) {
     // The host evaluators read the limit table where it is; what they derive from the per-level
     // tables is made again. The device's tables are updated by range where they can be (the
     // per-level tables where their entries did not move), else uploaded again.
-    bool newEvaluator = tables.patches || (levelsChanged && !onDevice_);
+    bool newEvaluator = tables.patches || (!changedLevels.empty() && !onDevice_);
     if (onDevice_ && !newEvaluator) {
         auto& device = static_cast<realtime::VulkanFrameEvaluator&>(*evaluator_);
         newEvaluator = holesChanged || !device.updateLimit(tables.limit, change);
